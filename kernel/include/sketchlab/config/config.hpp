@@ -1,0 +1,88 @@
+#pragma once
+// Stacks and experiments read from YAML (DESIGN.md, "Configs").
+//
+// Stack file (or the value of one entry of an experiment's `stacks` list):
+//
+//   name: cassie-default          # optional for a stack file (file stem)
+//   input:     {plugin: replay}                     # optional in experiments
+//   corrector: {plugin: freehand, params: {delta: 0.02}}
+//   surfacer:  {plugin: soapfilm}                   # optional
+//
+// Experiment file:
+//
+//   experiment: default
+//   recordings: [../data/recordings/*.jsonl]   # files or globs, relative to the file
+//   stacks: [ {name: freehand, corrector: {plugin: freehand}}, ... ]
+//   outputs: {dir: runs, sketch_json: true, stroke_csv: true, ply: false, obj: false}
+//
+// Overrides `key.path=value` (e.g. `stacks.0.corrector.params.delta=0.03`,
+// `outputs.dir=/tmp/x`) are applied to the YAML tree before validation; the
+// value is parsed as YAML. Errors throw ConfigError naming file, line and
+// the allowed values.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sketchlab/plugin/params.hpp"
+
+namespace sketchlab {
+
+// Where a value came from, for error messages ("configs/a.yaml:12").
+struct SourceLocation {
+  std::string file;
+  int line = 0;  // 1-based; 0 = command line override or default
+  std::string to_string() const;
+};
+
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct PluginChoice {
+  std::string plugin;  // plugin name
+  std::map<std::string, ParamValue> params;
+  std::map<std::string, SourceLocation> param_locations;
+  SourceLocation location;  // of the `plugin:` key
+};
+
+struct StackConfig {
+  std::string name;
+  std::optional<PluginChoice> input;  // default: replay
+  PluginChoice corrector;
+  std::optional<PluginChoice> surfacer;
+  SourceLocation location;
+};
+
+struct OutputsConfig {
+  std::filesystem::path dir = "runs";  // relative to the working directory
+  bool sketch_json = true;
+  bool stroke_csv = true;
+  bool ply = false;
+  bool obj = false;
+};
+
+struct ExperimentConfig {
+  std::string name;
+  std::filesystem::path file;  // the YAML file it came from
+  std::vector<std::filesystem::path> recordings;  // globs expanded, sorted, absolute
+  std::vector<StackConfig> stacks;
+  OutputsConfig outputs;
+};
+
+// "a.b.0.c=value" -> applied to the tree. Throws ConfigError on a malformed
+// override (no '=' or empty key).
+struct Override {
+  std::vector<std::string> path;
+  std::string value;  // YAML text
+};
+Override parse_override(const std::string& text);
+
+ExperimentConfig load_experiment(const std::filesystem::path& file,
+                                 const std::vector<Override>& overrides = {});
+StackConfig load_stack(const std::filesystem::path& file,
+                       const std::vector<Override>& overrides = {});
+
+}  // namespace sketchlab

@@ -1,0 +1,65 @@
+#pragma once
+// Input events: what a recording stores and what inputs produce. A session is
+// the fold of its events through a plugin stack (session.hpp).
+#include <map>
+#include <string>
+#include <variant>
+
+#include "sketchlab/curve.hpp"
+#include "sketchlab/stroke.hpp"
+#include "sketchlab/workspace.hpp"
+
+namespace sketchlab {
+
+struct StrokeEvent { Stroke stroke; bool operator==(const StrokeEvent&) const = default; };
+struct UndoEvent { bool operator==(const UndoEvent&) const = default; };
+struct RedoEvent { bool operator==(const RedoEvent&) const = default; };
+// Delete the curve nearest to `point` within `radius` metres.
+struct DeleteNearEvent {
+  Vec3 point = Vec3::Zero();
+  double radius = 0.05;
+  bool operator==(const DeleteNearEvent&) const = default;
+};
+// Delete every curve a stroke produced (imported sessions know the stroke).
+struct DeleteStrokeEvent { StrokeId stroke = 0; bool operator==(const DeleteStrokeEvent&) const = default; };
+struct ModeEvent { Layer mode = Layer::automatic; bool operator==(const ModeEvent&) const = default; };
+// The whole workspace after a change (zoom, mirror, grid).
+struct WorkspaceEvent { Workspace workspace; bool operator==(const WorkspaceEvent&) const = default; };
+struct CorrectionEvent { bool enabled = true; bool operator==(const CorrectionEvent&) const = default; };
+struct AddPatchEvent { Vec3 point = Vec3::Zero(); bool operator==(const AddPatchEvent&) const = default; };
+struct DeletePatchEvent { Vec3 point = Vec3::Zero(); bool operator==(const DeletePatchEvent&) const = default; };
+// A curve another system produced for a stroke (e.g. CASSIE's own output),
+// kept for comparison; it does not change the sketch.
+struct ReferenceEvent {
+  StrokeId stroke = 0;
+  std::string track;  // "cassie", "ground_truth", ...
+  Curve curve;
+  bool operator==(const ReferenceEvent&) const = default;
+};
+
+using EventPayload = std::variant<StrokeEvent, UndoEvent, RedoEvent, DeleteNearEvent,
+                                  DeleteStrokeEvent, ModeEvent, WorkspaceEvent,
+                                  CorrectionEvent, AddPatchEvent, DeletePatchEvent,
+                                  ReferenceEvent>;
+
+struct Event {
+  double time = 0.0;  // seconds since the session started
+  EventPayload payload;
+  bool operator==(const Event&) const = default;
+};
+
+// The event's type name as written in recordings ("stroke", "undo", ...).
+std::string_view event_type_name(const EventPayload& payload);
+
+// First line of a recording.
+struct RecordingHeader {
+  int version = 1;
+  std::string units = "m";  // "m" for VR sessions, "px" for 2D ones
+  Workspace workspace;
+  std::map<std::string, std::string> source;  // free-form provenance
+  bool operator==(const RecordingHeader&) const = default;
+};
+
+inline constexpr int recording_format_version = 1;
+
+}  // namespace sketchlab

@@ -1,0 +1,23 @@
+#pragma once
+#include <vector>
+
+#include "sketchlab/curve.hpp"
+
+namespace sketchlab {
+
+// Arclength of the curve between parameters t0 <= t1 (metres), by adaptive
+// Gauss–Legendre quadrature to relative tolerance 1e-9.
+double arclength(const Curve& curve, double t0, double t1);
+double arclength(const Curve& curve);
+
+// Parameter t at which arclength from 0 equals s (clamped to [0, length]).
+double parameter_at_arclength(const Curve& curve, double s);
+
+// n >= 2 parameters equally spaced in arclength, first 0, last t_max.
+std::vector<double> arclength_parameters(const Curve& curve, int n);
+// Points at those parameters.
+std::vector<Vec3> sample_by_arclength(const Curve& curve, int n);
+// Points spaced at most `spacing` metres apart along the curve (>= 2 points).
+std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing);
+
+}  // namespace sketchlab

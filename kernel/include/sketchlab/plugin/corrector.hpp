@@ -1,0 +1,41 @@
+#pragma once
+// Corrector plugins map (stroke, current sketch) to an edit plus the
+// constraints they considered (DESIGN.md, "Correctors are functions"). A
+// corrector never mutates the sketch and keeps no state between strokes
+// other than caches.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sketchlab/constraint.hpp"
+#include "sketchlab/edit.hpp"
+#include "sketchlab/sketch.hpp"
+#include "sketchlab/stroke.hpp"
+
+namespace sketchlab {
+
+struct CorrectionStats {
+  int iterations = 0;     // solver iterations (IRLS rounds, Newton steps...)
+  int subsets_tried = 0;  // constraint subsets evaluated (CASSIE)
+  // Anything else a corrector measures, by name (e.g. "confidence").
+  std::map<std::string, double> extra;
+  bool operator==(const CorrectionStats&) const = default;
+};
+
+struct Correction {
+  Edit edit;  // ids from sketch.network.next_*_id() upwards
+  std::vector<Constraint> constraints;  // considered; `enforced` tells which held
+  CorrectionStats stats;
+  // Non-empty when the corrector failed on this stroke; the edit is then
+  // ignored and the raw stroke stays recorded.
+  std::string error;
+};
+
+class Corrector {
+ public:
+  virtual ~Corrector() = default;
+  // `stroke` passed validate(); for 2D strokes stroke.view is set.
+  virtual Correction correct(const Stroke& stroke, const Sketch& sketch) = 0;
+};
+
+}  // namespace sketchlab

@@ -1,0 +1,169 @@
+#pragma once
+// What a plugin library exports, and the helpers plugin authors use.
+//
+// A plugin is a shared library exporting one C symbol, `sketchlab_plugin_entry`,
+// returning a PluginHeader. The host reads the header's ABI version and build
+// fingerprint before touching anything else; only when both match does it use
+// the C++ PluginDescriptor behind it. Factories and plugin objects never let an
+// exception escape: the wrappers below turn exceptions into error strings.
+//
+// Plugin author's side (one per library, no static registrars):
+//
+//   sketchlab::PluginDescriptor describe() {
+//     return sketchlab::corrector_descriptor<MyCorrector>("name", "1.0", "summary", specs);
+//   }
+//   SKETCHLAB_PLUGIN(describe)
+//
+// where MyCorrector derives from Corrector and has a constructor taking
+// `const sketchlab::Params&` (already validated against `specs`).
+#include <boost/config.hpp>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sketchlab/plugin/corrector.hpp"
+#include "sketchlab/plugin/input.hpp"
+#include "sketchlab/plugin/params.hpp"
+#include "sketchlab/plugin/surfacer.hpp"
+#include "sketchlab/version.hpp"
+
+namespace sketchlab {
+
+// Bumped whenever any type crossing the plugin boundary changes layout.
+inline constexpr std::uint32_t plugin_abi_version = 1;
+
+enum class PluginKind { corrector, surfacer, input };
+std::string_view to_string(PluginKind kind);
+PluginKind plugin_kind_from_string(std::string_view name);  // throws, naming allowed values
+
+extern "C" {
+// Plain C layout: safe to read from a library built by anything.
+struct PluginHeader {
+  std::uint32_t abi_version;
+  const char* fingerprint;  // must equal build_fingerprint() of the host
+  const void* descriptor;   // const PluginDescriptor*, used only after the checks
+};
+}
+
+template <class T>
+using Factory = std::unique_ptr<T> (*)(const Params& params, std::string& error);
+
+struct PluginDescriptor {
+  PluginKind kind = PluginKind::corrector;
+  std::string name;
+  std::string version;
+  std::string summary;
+  std::vector<ParamSpec> params;
+  // The one matching `kind` is set. On failure they return null and set error.
+  Factory<Corrector> make_corrector = nullptr;
+  Factory<Surfacer> make_surfacer = nullptr;
+  Factory<Input> make_input = nullptr;
+};
+
+namespace detail {
+template <class F, class R>
+R guarded(F&& f, R on_error, std::string R::*error_field) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    on_error.*error_field = e.what();
+  } catch (...) {
+    on_error.*error_field = "unknown exception";
+  }
+  return on_error;
+}
+
+template <class T>
+class GuardedCorrector final : public T {
+ public:
+  using T::T;
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    return guarded([&] { return T::correct(stroke, sketch); }, Correction{}, &Correction::error);
+  }
+};
+
+template <class T>
+class GuardedSurfacer final : public T {
+ public:
+  using T::T;
+  SurfaceUpdate update(const Sketch& sketch, const Edit& last) override {
+    return guarded([&] { return T::update(sketch, last); }, SurfaceUpdate{}, &SurfaceUpdate::error);
+  }
+  SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) override {
+    return guarded([&] { return T::command(sketch, command); }, SurfaceUpdate{},
+                   &SurfaceUpdate::error);
+  }
+};
+
+template <class T>
+class GuardedInput final : public T {
+ public:
+  using T::T;
+  std::optional<Event> next() override {
+    if (!error_.empty()) return std::nullopt;
+    try {
+      return T::next();
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    } catch (...) {
+      error_ = "unknown exception";
+    }
+    return std::nullopt;
+  }
+  bool finished() const override { return !error_.empty() || T::finished(); }
+  std::string error() const override { return error_.empty() ? T::error() : error_; }
+
+ private:
+  std::string error_;
+};
+
+template <class Base, template <class> class Guard, class T>
+std::unique_ptr<Base> make_guarded(const Params& params, std::string& error) {
+  try {
+    return std::make_unique<Guard<T>>(params);
+  } catch (const std::exception& e) {
+    error = e.what();
+  } catch (...) {
+    error = "unknown exception";
+  }
+  return nullptr;
+}
+}  // namespace detail
+
+template <class T>
+PluginDescriptor corrector_descriptor(std::string name, std::string version, std::string summary,
+                                      std::vector<ParamSpec> params) {
+  PluginDescriptor d{PluginKind::corrector, std::move(name), std::move(version),
+                     std::move(summary), std::move(params)};
+  d.make_corrector = &detail::make_guarded<Corrector, detail::GuardedCorrector, T>;
+  return d;
+}
+
+template <class T>
+PluginDescriptor surfacer_descriptor(std::string name, std::string version, std::string summary,
+                                     std::vector<ParamSpec> params) {
+  PluginDescriptor d{PluginKind::surfacer, std::move(name), std::move(version),
+                     std::move(summary), std::move(params)};
+  d.make_surfacer = &detail::make_guarded<Surfacer, detail::GuardedSurfacer, T>;
+  return d;
+}
+
+template <class T>
+PluginDescriptor input_descriptor(std::string name, std::string version, std::string summary,
+                                  std::vector<ParamSpec> params) {
+  PluginDescriptor d{PluginKind::input, std::move(name), std::move(version), std::move(summary),
+                     std::move(params)};
+  d.make_input = &detail::make_guarded<Input, detail::GuardedInput, T>;
+  return d;
+}
+
+}  // namespace sketchlab
+
+#define SKETCHLAB_PLUGIN(DESCRIBE_FN)                                                  \
+  extern "C" BOOST_SYMBOL_EXPORT const ::sketchlab::PluginHeader* sketchlab_plugin_entry() { \
+    static const ::sketchlab::PluginDescriptor descriptor = DESCRIBE_FN();             \
+    static const ::sketchlab::PluginHeader header{::sketchlab::plugin_abi_version,      \
+                                                  SKETCHLAB_BUILD_FINGERPRINT, &descriptor}; \
+    return &header;                                                                    \
+  }

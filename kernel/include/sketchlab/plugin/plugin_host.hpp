@@ -1,0 +1,72 @@
+#pragma once
+// Finds, checks and loads plugin libraries (Boost.DLL).
+//
+// A plugin file is a shared library named sketchlab_<kind>_<name>.so. The host
+// reads its PluginHeader, checks the ABI version and build fingerprint before
+// anything else, then the descriptor (kind and name match the file name,
+// parameter defaults satisfy their own specs). A library failing any check is
+// recorded in errors() with its path and reason; the others still load.
+// Libraries are never unloaded before the host and every object they created
+// are gone: objects hold a reference to their library.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sketchlab/plugin/plugin_api.hpp"
+
+namespace sketchlab {
+
+struct LoadedPlugin {
+  std::filesystem::path path;
+  const PluginDescriptor* descriptor = nullptr;  // owned by the library
+  std::shared_ptr<void> library;                 // keeps the library loaded
+};
+
+struct PluginLoadError {
+  std::filesystem::path path;
+  std::string reason;
+};
+
+// Thrown by the make_* functions: unknown plugin (the message lists the
+// available ones), invalid parameters (ParamError message), factory failure.
+struct PluginError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class PluginHost {
+ public:
+  PluginHost() = default;
+
+  // The build tree's plugin directory, the install tree's
+  // (<exe>/../lib/sketchlab/plugins), then each entry of SKETCHLAB_PLUGIN_PATH
+  // (colon-separated), existing directories only, without duplicates.
+  static std::vector<std::filesystem::path> default_search_paths();
+
+  // Loads every sketchlab_*.so in the directories (sorted by file name). A
+  // plugin name already loaded from an earlier directory is skipped (first
+  // wins) and noted in errors().
+  void load_directories(const std::vector<std::filesystem::path>& dirs);
+  // Loads one library; returns false and records the reason on failure.
+  bool load_file(const std::filesystem::path& file);
+
+  const std::vector<LoadedPlugin>& plugins() const { return plugins_; }
+  const std::vector<PluginLoadError>& errors() const { return errors_; }
+
+  const LoadedPlugin* find(PluginKind kind, const std::string& name) const;
+
+  // Validates `params` against the plugin's specs and creates the object. The
+  // returned pointer keeps the library loaded.
+  std::shared_ptr<Corrector> make_corrector(const std::string& name,
+                                            const std::map<std::string, ParamValue>& params) const;
+  std::shared_ptr<Surfacer> make_surfacer(const std::string& name,
+                                          const std::map<std::string, ParamValue>& params) const;
+  std::shared_ptr<Input> make_input(const std::string& name,
+                                    const std::map<std::string, ParamValue>& params) const;
+
+ private:
+  std::vector<LoadedPlugin> plugins_;
+  std::vector<PluginLoadError> errors_;
+};
+
+}  // namespace sketchlab

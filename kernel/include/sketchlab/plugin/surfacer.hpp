@@ -1,0 +1,29 @@
+#pragma once
+// Surfacer plugins keep patches up to date with the network.
+#include <string>
+
+#include "sketchlab/edit.hpp"
+#include "sketchlab/event.hpp"
+#include "sketchlab/sketch.hpp"
+
+namespace sketchlab {
+
+struct SurfaceUpdate {
+  // Patch parts only (patches_added / patches_removed), ids from
+  // sketch.network.next_patch_id() upwards.
+  Edit edit;
+  std::string error;  // non-empty on failure; the edit is then ignored
+};
+
+// The commands a surfacer answers (subset of the input events).
+using SurfaceCommand = std::variant<AddPatchEvent, DeletePatchEvent>;
+
+class Surfacer {
+ public:
+  virtual ~Surfacer() = default;
+  // Called after `last` was applied to sketch.network.
+  virtual SurfaceUpdate update(const Sketch& sketch, const Edit& last) = 0;
+  virtual SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) = 0;
+};
+
+}  // namespace sketchlab

@@ -1,0 +1,30 @@
+#pragma once
+// The state plugins read: the workspace, the network (with patches), every
+// raw stroke by id, and the undo history. Folding a recording's events
+// through a plugin stack produces it (see session.hpp).
+#include <map>
+#include <vector>
+
+#include "sketchlab/history.hpp"
+#include "sketchlab/network.hpp"
+#include "sketchlab/stroke.hpp"
+#include "sketchlab/workspace.hpp"
+
+namespace sketchlab {
+
+struct Sketch {
+  Workspace workspace;
+  Network network;
+  std::map<StrokeId, Stroke> strokes;  // every stroke received, even undone ones
+  History history;
+  bool correction_enabled = true;
+  Layer mode = Layer::automatic;  // current drawing mode (strokes may override)
+};
+
+// Ids of the curves in the network that came from `stroke`, ascending.
+std::vector<CurveId> curves_of_stroke(const Sketch& sketch, StrokeId stroke);
+
+// Strokes whose edits are currently applied (history order, oldest first).
+std::vector<StrokeId> live_strokes(const Sketch& sketch);
+
+}  // namespace sketchlab

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages sketchlab needs. Idempotent: prints nothing
+# and touches nothing when every package is already installed.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git
+  # kernel
+  libeigen3-dev nlohmann-json3-dev libyaml-cpp-dev
+  # plugin host (Boost.DLL is header-only but needs Boost.Filesystem)
+  libboost-dev libboost-filesystem-dev
+  # command line, tests
+  libcli11-dev catch2
+  # plugins and viewers
+  libcgal-dev libopenmesh-dev libnlopt-cxx-dev libtbb-dev
+  libvtk9-dev libopenmpi-dev libopenxr-dev
+  # headless rendering and viewer tests
+  xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "setup: installing ${#missing[@]} Debian package(s): ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"
