@@ -2,6 +2,7 @@
 // A curve is a cubic poly-Bézier: K segments share end control points, so it
 // has 3K+1 control points. Segment k uses points [3k, 3k+3]. The global
 // parameter t runs over [0, K]; t in [k, k+1] is segment k at local t-k.
+#include <string>
 #include <vector>
 
 #include "sketchlab/types.hpp"

@@ -9,6 +9,8 @@
 //  - the spatial index covers exactly the current curves, nodes and keypoints.
 #include <map>
 #include <memory>
+#include <optional>
+#include <set>
 #include <vector>
 
 #include "sketchlab/edit.hpp"
@@ -67,17 +69,36 @@ class Network {
   // nodes replaced, nodes added, patches added.
   // Throws std::invalid_argument (network unchanged) when the edit references
   // a missing id, reuses an existing one, or holds an invalid curve.
+  // Each step is checked against the state the previous steps left (so a
+  // curve removed in step 3 may be re-added under its id in step 5), and the
+  // result must keep the invariants above: incidences and patch boundaries
+  // (including existing ones on a replaced curve) within [0, t_max] of an
+  // existing curve, keypoint and normal t within range, finite positions,
+  // mesh faces indexing existing vertices. Ids are >= 1; a node has at least
+  // one incidence. The message names the edit field, index and id
+  // ("Network::apply: curves_removed[1]: curve 17 does not exist").
+  // Counters: set to edit.counters when present (inverse edits; must exceed
+  // every id left), else advanced to max(id)+1 of the items added. The
+  // returned inverse always carries the old counters.
   Edit apply(const Edit& edit);
 
   // Segments: the pieces of each curve between consecutive nodes on it, in
   // (curve id, t) order. Pieces between a curve end and its first node are
-  // not segments (they are dangling).
+  // not segments (they are dangling), and neither are zero-length pieces
+  // between two nodes at the same t. On a closed curve t_max is the same
+  // point as 0 (a node there is listed at t = 0) and the last segment wraps
+  // from the last node across the seam to the first: t0 >= t1, and t0 == t1
+  // when a single node (or several at one t) closes the whole loop; a wrap
+  // that ends exactly at the seam is stored as [t0, t_max] instead.
+  // segments_of throws std::invalid_argument for an unknown curve.
   std::vector<Segment> segments() const;
   std::vector<Segment> segments_of(CurveId curve) const;
 
   // Proximity queries, answered from a spatial index (not a scan). Results
   // hold every item within distance r (inclusive), sorted by distance, ties by
   // id. Distances are exact (closest point on the curve), r >= 0 in metres.
+  // Throw std::invalid_argument for a negative or non-finite r, a
+  // non-finite point, or an empty polyline.
   std::vector<CurveHit> curves_near(const Vec3& p, double r) const;
   // Curves with some point within r of the polyline; the hit is the closest
   // pair (t on the curve).
@@ -89,10 +110,25 @@ class Network {
   bool operator==(const Network& other) const;
 
  private:
+  // Mutators keeping the reverse maps below in sync (apply and its rollback
+  // are their only callers).
+  void put_curve(const NetworkCurve& curve);
+  void erase_curve(CurveId id);
+  void put_node(const Node& node);
+  void erase_node(NodeId id);
+  void put_patch(const Patch& patch);
+  void erase_patch(PatchId id);
+  void index_curve(CurveId id, const std::optional<NetworkCurve>& old_curve);
+  void index_node(NodeId id, const std::optional<Node>& old_node);
+
   std::map<CurveId, NetworkCurve> curves_;
   std::map<NodeId, Node> nodes_;
   std::map<PatchId, Patch> patches_;
   IdCounters counters_;
+  // Derived: which nodes have an incidence on a curve, which patches have a
+  // boundary piece on it (so removing or replacing a curve does not scan).
+  std::map<CurveId, std::set<NodeId>> nodes_on_curve_;
+  std::map<CurveId, std::set<PatchId>> patches_on_curve_;
   std::unique_ptr<SpatialIndex> index_;
 };
 

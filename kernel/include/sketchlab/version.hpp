@@ -3,6 +3,8 @@
 // standard library, build type and kernel version. Two builds with equal
 // fingerprints can pass C++ objects (std::string, std::vector, Eigen) across
 // the plugin boundary.
+#include <version>  // defines the standard library macros tested below
+
 #define SKETCHLAB_KERNEL_VERSION "0.1.0"
 
 #define SKETCHLAB_STR_(x) #x

@@ -80,6 +80,24 @@ struct Override {
 };
 Override parse_override(const std::string& text);
 
+// Throws ConfigError "<where>: <message>".
+[[noreturn]] void throw_config_error(const SourceLocation& where, const std::string& message);
+
+// Turns a ParamError from PluginHost::make_* into a ConfigError naming the
+// file:line of that parameter in `choice` (of its `plugin:` key when the
+// parameter was not set in the config) and the allowed values.
+[[noreturn]] void rethrow_param_error(const ParamError& error, const PluginChoice& choice);
+
+// Both throw ConfigError naming file:line (and the allowed keys or values) on
+// unreadable YAML, unknown keys, values of the wrong type, missing required
+// keys (`corrector`, `stacks`, `recordings`), duplicate stack names, a
+// recording that does not exist or a glob that matches nothing. A plugin
+// choice may be written as a map {plugin: NAME, params: {...}} or just NAME.
+// Parameter values keep their YAML scalar type: true/false -> bool, integers
+// -> int64, other numbers (and .inf/.nan) -> double, anything else (or
+// quoted) -> string. Stack names default to the corrector plugin name, made
+// unique with -2, -3, ... Recordings set by an override are relative to the
+// working directory, the others to the config file.
 ExperimentConfig load_experiment(const std::filesystem::path& file,
                                  const std::vector<Override>& overrides = {});
 StackConfig load_stack(const std::filesystem::path& file,

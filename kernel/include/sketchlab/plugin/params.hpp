@@ -49,6 +49,12 @@ class Params {
   std::map<std::string, ParamValue> values_;
 };
 
+// Checks one value against its spec and returns it normalised (an integer
+// given for a real parameter becomes a double). Throws ParamError naming the
+// parameter and describe_allowed(spec) on a wrong type, a non-finite real, a
+// value out of [min, max] or a choice not in the list.
+ParamValue validate_param(const ParamSpec& spec, const ParamValue& value);
+
 // Fills defaults and checks each given value against the specs. Integer values
 // are accepted for real parameters. Throws ParamError naming the parameter
 // and the allowed values on an unknown name, wrong type or out-of-range value.

@@ -1,5 +1,6 @@
 #pragma once
 // Surfacer plugins keep patches up to date with the network.
+#include <map>
 #include <string>
 
 #include "sketchlab/edit.hpp"
@@ -13,6 +14,8 @@ struct SurfaceUpdate {
   // sketch.network.next_patch_id() upwards.
   Edit edit;
   std::string error;  // non-empty on failure; the edit is then ignored
+  // Optional figures by name (cycles searched, time per patch...).
+  std::map<std::string, double> stats;
 };
 
 // The commands a surfacer answers (subset of the input events).

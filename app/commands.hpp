@@ -1,0 +1,12 @@
+#pragma once
+// The verbs of the `sketchlab` command line. Each adds its subcommand to the
+// app; the callback runs it and sets the process exit code.
+#include <CLI/CLI.hpp>
+
+namespace sketchlab::cli {
+
+void add_plugins_command(CLI::App& app, int& exit_code);
+void add_run_command(CLI::App& app, int& exit_code);
+void add_convert_command(CLI::App& app, int& exit_code);
+
+}  // namespace sketchlab::cli

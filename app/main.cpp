@@ -1,0 +1,25 @@
+// sketchlab: replay, compare and export 3D sketch beautification results.
+#include <iostream>
+
+#include "commands.hpp"
+#include "sketchlab/version.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"sketchlab " SKETCHLAB_KERNEL_VERSION
+               ": 3D sketch beautification with interchangeable correctors and surfacers"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", SKETCHLAB_KERNEL_VERSION);
+  int exit_code = 0;
+  sketchlab::cli::add_plugins_command(app, exit_code);
+  sketchlab::cli::add_run_command(app, exit_code);
+  sketchlab::cli::add_convert_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "sketchlab: " << e.what() << "\n";
+    return 1;
+  }
+  return exit_code;
+}

@@ -1,0 +1,23 @@
+#pragma once
+// The sketch file (DESIGN.md "Formats"): JSON with the workspace, curves (as
+// control points, with layer, source stroke and keypoints), nodes, segments,
+// patches (boundary and mesh), the raw strokes' ids, and the constraints each
+// stroke's correction considered. Keys are written in a fixed order and
+// numbers in shortest round-trip form, so equal sketches give equal bytes.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sketchlab/session.hpp"
+#include "sketchlab/sketch.hpp"
+
+namespace sketchlab {
+
+// `steps` (optional) adds each stroke's considered constraints.
+std::string sketch_to_json(const Sketch& sketch, const std::vector<StepReport>* steps = nullptr);
+
+// Reads a sketch file back (workspace and network; strokes and history are
+// not stored). Throws std::runtime_error "file: field: reason" on bad input.
+Sketch read_sketch_json(const std::filesystem::path& file);
+
+}  // namespace sketchlab

@@ -1,0 +1,50 @@
+#pragma once
+// Hook removal (CASSIE thesis §3.2.2 "Hooks removal", after Liu et al.): VR
+// strokes often start and end with a short involuntary flick made while the
+// trigger is pressed or released. A hook shows as a C1 discontinuity (a sharp
+// turn) close to an end of the stroke; everything before it is cut.
+#include <cstddef>
+#include <numbers>
+#include <vector>
+
+#include "sketchlab/types.hpp"
+
+namespace sketchlab {
+
+// Inclusive range [first, last] of point indices kept from an input.
+struct IndexRange {
+  std::size_t first = 0;
+  std::size_t last = 0;
+  std::size_t size() const { return last - first + 1; }
+  bool operator==(const IndexRange&) const = default;
+};
+
+// Distances are in the units of the points (metres for VR strokes; the
+// pipeline passes δ/s-scaled values).
+struct HookParams {
+  // A hook spans at most this Euclidean distance from its stroke end (3δ).
+  double max_length = 0.06;
+  // ... and at most this fraction of the stroke's polyline length (15 %).
+  double max_fraction = 0.15;
+  // Turns closer than this to the end are ignored: too small to matter and
+  // dominated by sampling noise (δ/2).
+  double min_length = 0.01;
+  // Minimum turn (radians, in (0, π)) that counts as a C1 discontinuity.
+  double min_angle = std::numbers::pi / 4;
+};
+
+// Range of `points` (n >= 2) left after cutting a hook at each end.
+//
+// A candidate cut i near the start lies at distance a = |p_i - p_0| in
+// [min_length, max_length] with cumulative length <= max_fraction of the
+// stroke. Its turn is the angle between the least-squares directions of the
+// hook p_0..p_i and of the points from p_i to the first later point at
+// distance >= a; the turn must also reach min_angle at half that scale (a/2
+// on both sides), so only turns concentrated at p_i (a corner, not a smooth
+// bend) qualify. The candidate with the largest turn >= min_angle is cut
+// (p_i is kept). The end is handled symmetrically on what remains. Returns
+// {0, n-1} when there is no hook. Throws std::invalid_argument for n < 2,
+// non-finite points or parameters out of range.
+IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams& params);
+
+}  // namespace sketchlab

@@ -1,0 +1,42 @@
+#pragma once
+// Turning a stack config into live plugin objects, and replaying an input
+// through them.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sketchlab/config/config.hpp"
+#include "sketchlab/plugin/plugin_host.hpp"
+#include "sketchlab/session.hpp"
+
+namespace sketchlab {
+
+struct StackInstance {
+  std::string name;
+  std::shared_ptr<Corrector> corrector;
+  std::shared_ptr<Surfacer> surfacer;  // may be null
+};
+
+// Creates the corrector and surfacer of `stack`. Parameter errors become
+// ConfigError naming the config file:line and the allowed values; an unknown
+// plugin names the available ones.
+StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host);
+
+// Creates the stack's input; for the replay input (the default) the `path`
+// parameter is set to `recording`.
+std::shared_ptr<Input> instantiate_input(const StackConfig& stack, const PluginHost& host,
+                                         const std::filesystem::path& recording);
+
+struct ReplayResult {
+  std::string stack;
+  RecordingHeader header;
+  Session session;
+  std::vector<StepReport> steps;  // one per event
+};
+
+// Folds every event of `input` through a new session on `stack`. Throws
+// std::runtime_error if the input reports an error (with its message).
+ReplayResult replay(Input& input, const StackInstance& stack);
+
+}  // namespace sketchlab

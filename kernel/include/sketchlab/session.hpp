@@ -1,0 +1,73 @@
+#pragma once
+// A session folds input events through a plugin stack into a Sketch.
+//
+// Invariant: sketch() is exactly the fold of the events handled so far; the
+// same events through the same stack (same plugins, parameters and build)
+// give the same sketch bit for bit. Undo applies the inverse edits of the
+// last history entry, which equals folding one edit fewer because correctors
+// keep no hidden state between strokes.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sketchlab/constraint.hpp"
+#include "sketchlab/event.hpp"
+#include "sketchlab/plugin/corrector.hpp"
+#include "sketchlab/plugin/surfacer.hpp"
+#include "sketchlab/preprocess/preprocess.hpp"
+#include "sketchlab/sketch.hpp"
+
+namespace sketchlab {
+
+// What handling one event did, for statistics and viewers.
+struct StepReport {
+  std::string event;               // event type name ("stroke", "undo", ...)
+  double time = 0.0;               // event time (s)
+  std::optional<StrokeId> stroke;  // for stroke events
+  double latency_ms = 0.0;         // wall time of the corrector + surfacer (not deterministic)
+  bool corrected = false;          // the corrector ran (correction on, stroke accepted)
+  CorrectionStats stats;
+  std::vector<Constraint> constraints;  // what the corrector considered
+  int curves_added = 0, curves_removed = 0, curves_replaced = 0;
+  int patches_added = 0, patches_removed = 0;
+  // Non-empty when something was refused or failed (invalid stroke, plugin
+  // error, nothing to undo). The event is still part of the session.
+  std::string error;
+};
+
+class Session {
+ public:
+  // `corrector` must not be null; `surfacer` may be. Fallback fitting (used
+  // when correction is toggled off) uses `fallback` preprocessing parameters.
+  Session(const Workspace& workspace, std::shared_ptr<Corrector> corrector,
+          std::shared_ptr<Surfacer> surfacer, PreprocessParams fallback = {});
+
+  StepReport handle(const Event& event);
+
+  const Sketch& sketch() const { return sketch_; }
+  // Reference curves by track then stroke (from ReferenceEvents).
+  const std::map<std::string, std::map<StrokeId, Curve>>& references() const { return references_; }
+
+ private:
+  StepReport handle_stroke(const Stroke& stroke, StepReport report);
+  void apply_surfacer(const SurfaceUpdate& update, HistoryEntry& entry, StepReport& report);
+  void apply_step(const Edit& edit, HistoryEntry& entry, StepReport& report);
+  void commit(HistoryEntry entry);
+  StepReport remove_curves(const std::vector<CurveId>& curves, const std::string& action,
+                           StepReport report);
+
+  Sketch sketch_;
+  std::shared_ptr<Corrector> corrector_;
+  std::shared_ptr<Surfacer> surfacer_;
+  PreprocessParams fallback_;
+  std::map<std::string, std::map<StrokeId, Curve>> references_;
+};
+
+// The edit that adds `stroke` as one fitted curve (preprocessing only, no
+// constraints): the papers' no-auto-correct baseline, shared by the freehand
+// corrector and by sessions with correction toggled off. 2D strokes are fitted
+// in pixel space (z = 0).
+Edit freehand_edit(const Stroke& stroke, const Sketch& sketch, const PreprocessParams& params);
+
+}  // namespace sketchlab

@@ -1,0 +1,341 @@
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "config_internal.hpp"
+
+namespace sketchlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Path = std::vector<std::string>;
+
+const std::vector<std::string> stack_keys = {"name", "input", "corrector", "surfacer"};
+const std::vector<std::string> plugin_keys = {"plugin", "params"};
+const std::vector<std::string> experiment_keys = {"experiment", "recordings", "stacks", "outputs"};
+const std::vector<std::string> output_keys = {"dir", "sketch_json", "stroke_csv", "ply", "obj"};
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string dotted(const Path& path) {
+  std::string text;
+  for (const auto& part : path) text += (text.empty() ? "" : ".") + part;
+  return text.empty() ? "the document" : "'" + text + "'";
+}
+
+Path child(Path path, const std::string& step) {
+  path.push_back(step);
+  return path;
+}
+
+std::string describe_node(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Null: return "nothing";
+    default: return "nothing";
+  }
+}
+
+// Reads the YAML tree of one file, knowing which parts came from overrides.
+class Reader {
+ public:
+  Reader(fs::path file, const std::vector<Override>& overrides)
+      : file_(std::move(file)), base_(fs::absolute(file_).parent_path()) {
+    for (const auto& o : overrides) overridden_.push_back(o.path);
+  }
+
+  const fs::path& file() const { return file_; }
+
+  YAML::Node load(const std::vector<Override>& overrides) const {
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(file_.string());
+    } catch (const YAML::BadFile&) {
+      throw ConfigError(file_.string() + ": cannot read the file");
+    } catch (const YAML::Exception& e) {
+      throw ConfigError(file_.string() + ":" + std::to_string(e.mark.line + 1) +
+                        ": invalid YAML: " + e.msg);
+    }
+    if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+    config_detail::apply_overrides(root, overrides);
+    return root;
+  }
+
+  // The command line when `path` (or a prefix of it) was overridden, else
+  // the node's line in the file.
+  SourceLocation where(const YAML::Node& node, const Path& path) const {
+    for (const auto& o : overridden_) {
+      if (o.size() <= path.size() && std::equal(o.begin(), o.end(), path.begin())) return {};
+    }
+    const int line = node.IsDefined() ? node.Mark().line : -1;
+    if (line >= 0) return {file_.string(), line + 1};
+    // No mark: a map an override created on its way, or an empty document.
+    for (const auto& o : overridden_) {
+      if (path.size() < o.size() && std::equal(path.begin(), path.end(), o.begin())) return {};
+    }
+    return {file_.string(), 0};
+  }
+
+  [[noreturn]] void fail(const YAML::Node& node, const Path& path, const std::string& message) const {
+    throw_config_error(where(node, path), message);
+  }
+
+  // Base directory for relative recordings given at `path`.
+  fs::path base_for(const YAML::Node& node, const Path& path) const {
+    return where(node, path).line > 0 ? base_ : fs::current_path();
+  }
+
+  // Checks that `node` is a map whose keys are all in `allowed` (no key twice).
+  void expect_map(const YAML::Node& node, const Path& path, const std::string& what,
+                  const std::vector<std::string>& allowed) const {
+    if (!node.IsMap()) {
+      fail(node, path, dotted(path) + " must be " + what + " (a map), not " + describe_node(node) +
+                           " (allowed keys: " + join(allowed) + ")");
+    }
+    std::map<std::string, int> seen;
+    for (const auto& entry : node) {
+      const YAML::Node& key = entry.first;
+      if (!key.IsScalar()) fail(key, path, "keys of " + what + " must be plain names");
+      const std::string name = key.Scalar();
+      if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
+        fail(key, child(path, name),
+             "unknown key '" + name + "' in " + what + " (allowed: " + join(allowed) + ")");
+      }
+      if (!seen.emplace(name, key.Mark().line + 1).second) {
+        fail(key, child(path, name), "key '" + name + "' appears twice in " + what);
+      }
+    }
+  }
+
+  void require(const YAML::Node& map, const Path& path, const std::string& key,
+               const std::string& what, const std::vector<std::string>& allowed) const {
+    if (!map[key]) {
+      fail(map, path, what + " has no '" + key + "' (allowed: " + join(allowed) + ")");
+    }
+  }
+
+  std::string read_string(const YAML::Node& node, const Path& path) const {
+    if (!node.IsScalar() || node.Scalar().empty()) {
+      fail(node, path, dotted(path) + " must be a non-empty string, not " + describe_node(node));
+    }
+    return node.Scalar();
+  }
+
+  bool read_bool(const YAML::Node& node, const Path& path) const {
+    if (node.IsScalar() && node.Tag() != "!") {
+      const std::string& s = node.Scalar();
+      if (s == "true" || s == "True" || s == "TRUE") return true;
+      if (s == "false" || s == "False" || s == "FALSE") return false;
+    }
+    fail(node, path, dotted(path) + " must be a boolean, not " + describe_node(node) +
+                         " (allowed: true, false)");
+  }
+
+  ParamValue read_param(const YAML::Node& node, const Path& path) const {
+    if (!node.IsScalar()) {
+      fail(node, path, "parameter " + dotted(path) + " must be a single value, not " +
+                           describe_node(node) + " (allowed: true, false, a number or a string)");
+    }
+    const std::string& s = node.Scalar();
+    if (node.Tag() == "!") return s;  // quoted: always a string
+    if (s == "true" || s == "True" || s == "TRUE") return true;
+    if (s == "false" || s == "False" || s == "FALSE") return false;
+    if (auto i = parse_integer(s)) return *i;
+    if (auto d = parse_real(s)) return *d;
+    if (s.find_first_not_of("+-0123456789") == std::string::npos && !s.empty() &&
+        s.find_first_of("0123456789") != std::string::npos) {
+      fail(node, path, "parameter " + dotted(path) + ": integer " + s + " does not fit in 64 bits");
+    }
+    return s;
+  }
+
+  PluginChoice read_plugin(const YAML::Node& node, const Path& path, const std::string& role) const {
+    PluginChoice choice;
+    choice.location = where(node, path);
+    if (node.IsScalar()) {  // shorthand `corrector: freehand`
+      choice.plugin = read_string(node, path);
+      return choice;
+    }
+    expect_map(node, path, "a " + role + " choice", plugin_keys);
+    require(node, path, "plugin", "the " + role + " choice", plugin_keys);
+    choice.plugin = read_string(node["plugin"], child(path, "plugin"));
+    choice.location = where(node["plugin"], child(path, "plugin"));
+    if (const YAML::Node params = node["params"]; params && !params.IsNull()) {
+      const Path params_path = child(path, "params");
+      if (!params.IsMap()) {
+        fail(params, params_path, dotted(params_path) + " must be a map of parameter values, not " +
+                                      describe_node(params));
+      }
+      for (const auto& entry : params) {
+        if (!entry.first.IsScalar()) fail(entry.first, params_path, "parameter names must be plain names");
+        const std::string name = entry.first.Scalar();
+        const Path param_path = child(params_path, name);
+        if (choice.params.count(name)) fail(entry.first, param_path, "parameter '" + name + "' appears twice");
+        choice.params[name] = read_param(entry.second, param_path);
+        choice.param_locations[name] = where(entry.second, param_path);
+      }
+    }
+    return choice;
+  }
+
+  StackConfig read_stack(const YAML::Node& node, const Path& path) const {
+    expect_map(node, path, "a stack", stack_keys);
+    StackConfig stack;
+    stack.location = where(node, path);
+    require(node, path, "corrector", "the stack", stack_keys);
+    if (node["name"]) stack.name = read_string(node["name"], child(path, "name"));
+    if (node["input"]) stack.input = read_plugin(node["input"], child(path, "input"), "input");
+    stack.corrector = read_plugin(node["corrector"], child(path, "corrector"), "corrector");
+    if (node["surfacer"]) {
+      stack.surfacer = read_plugin(node["surfacer"], child(path, "surfacer"), "surfacer");
+    }
+    return stack;
+  }
+
+ private:
+  static std::optional<std::int64_t> parse_integer(const std::string& s) {
+    std::int64_t value = 0;
+    const char* begin = s.data() + (s.size() > 1 && s[0] == '+' ? 1 : 0);
+    auto [end, ec] = std::from_chars(begin, s.data() + s.size(), value);
+    if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return value;
+  }
+
+  static std::optional<double> parse_real(const std::string& s) {
+    if (s == ".inf" || s == "+.inf" || s == ".Inf" || s == ".INF") {
+      return std::numeric_limits<double>::infinity();
+    }
+    if (s == "-.inf" || s == "-.Inf" || s == "-.INF") return -std::numeric_limits<double>::infinity();
+    if (s == ".nan" || s == ".NaN" || s == ".NAN") return std::numeric_limits<double>::quiet_NaN();
+    // Plain decimal or exponent notation only: from_chars alone would also
+    // take "inf" and "nan", which YAML reads as strings.
+    if (s.empty() || s.find_first_not_of("+-.0123456789eE") != std::string::npos ||
+        s.find_first_of("0123456789") == std::string::npos) {
+      return std::nullopt;
+    }
+    double value = 0.0;
+    const char* begin = s.data() + (s.size() > 1 && s[0] == '+' ? 1 : 0);
+    auto [end, ec] = std::from_chars(begin, s.data() + s.size(), value);
+    if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return value;
+  }
+
+  fs::path file_;
+  fs::path base_;
+  std::vector<Path> overridden_;
+};
+
+// Stack names: explicit ones must be unique; the others take the corrector
+// plugin name, with -2, -3, ... when that is taken.
+void name_stacks(std::vector<StackConfig>& stacks) {
+  std::map<std::string, SourceLocation> taken;
+  for (const auto& s : stacks) {
+    if (s.name.empty()) continue;
+    auto [it, inserted] = taken.emplace(s.name, s.location);
+    if (!inserted) {
+      throw_config_error(s.location, "stack name '" + s.name + "' is already used by the stack at " +
+                                         it->second.to_string() + " (stack names must be unique)");
+    }
+  }
+  for (auto& s : stacks) {
+    if (!s.name.empty()) continue;
+    std::string name = s.corrector.plugin;
+    for (int k = 2; taken.count(name); ++k) name = s.corrector.plugin + "-" + std::to_string(k);
+    s.name = name;
+    taken.emplace(name, s.location);
+  }
+}
+
+}  // namespace
+
+StackConfig load_stack(const fs::path& file, const std::vector<Override>& overrides) {
+  const Reader reader(file, overrides);
+  const YAML::Node root = reader.load(overrides);
+  StackConfig stack = reader.read_stack(root, {});
+  if (stack.name.empty()) stack.name = file.stem().string();
+  return stack;
+}
+
+ExperimentConfig load_experiment(const fs::path& file, const std::vector<Override>& overrides) {
+  const Reader reader(file, overrides);
+  const YAML::Node root = reader.load(overrides);
+  reader.expect_map(root, {}, "an experiment", experiment_keys);
+
+  ExperimentConfig config;
+  config.file = file;
+  config.name = root["experiment"] ? reader.read_string(root["experiment"], {"experiment"})
+                                   : file.stem().string();
+
+  reader.require(root, {}, "stacks", "the experiment", experiment_keys);
+  const YAML::Node stacks = root["stacks"];
+  if (!stacks.IsSequence() || stacks.size() == 0) {
+    reader.fail(stacks, {"stacks"},
+                "'stacks' must be a non-empty list of stacks, not " +
+                    (stacks.IsSequence() ? std::string("an empty list") : describe_node(stacks)) +
+                    " (each with keys: " + join(stack_keys) + ")");
+  }
+  for (std::size_t i = 0; i < stacks.size(); ++i) {
+    config.stacks.push_back(reader.read_stack(stacks[i], {"stacks", std::to_string(i)}));
+  }
+  name_stacks(config.stacks);
+
+  if (const YAML::Node outputs = root["outputs"]; outputs && !outputs.IsNull()) {
+    const Path path = {"outputs"};
+    reader.expect_map(outputs, path, "the outputs", output_keys);
+    if (outputs["dir"]) config.outputs.dir = reader.read_string(outputs["dir"], child(path, "dir"));
+    const std::pair<const char*, bool OutputsConfig::*> flags[] = {
+        {"sketch_json", &OutputsConfig::sketch_json},
+        {"stroke_csv", &OutputsConfig::stroke_csv},
+        {"ply", &OutputsConfig::ply},
+        {"obj", &OutputsConfig::obj}};
+    for (const auto& [key, field] : flags) {
+      if (outputs[key]) config.outputs.*field = reader.read_bool(outputs[key], child(path, key));
+    }
+  }
+
+  // Files are looked up last, once the whole structure is known to be valid.
+  reader.require(root, {}, "recordings", "the experiment", experiment_keys);
+  const YAML::Node recordings = root["recordings"];
+  const Path recordings_path = {"recordings"};
+  std::vector<std::pair<YAML::Node, Path>> patterns;
+  if (recordings.IsScalar()) {
+    patterns.emplace_back(recordings, recordings_path);
+  } else if (recordings.IsSequence() && recordings.size() > 0) {
+    for (std::size_t i = 0; i < recordings.size(); ++i) {
+      patterns.emplace_back(recordings[i], child(recordings_path, std::to_string(i)));
+    }
+  } else {
+    reader.fail(recordings, recordings_path,
+                "'recordings' must be a non-empty list of files or globs, not " +
+                    (recordings.IsSequence() ? std::string("an empty list") : describe_node(recordings)) +
+                    " (allowed: paths relative to the config file, with * and ? in file names)");
+  }
+  for (const auto& [node, path] : patterns) {
+    const std::string pattern = reader.read_string(node, path);
+    try {
+      for (auto& f : config_detail::expand_pattern(pattern, reader.base_for(node, path))) {
+        config.recordings.push_back(std::move(f));
+      }
+    } catch (const std::runtime_error& e) {
+      reader.fail(node, path, e.what());
+    }
+  }
+  std::sort(config.recordings.begin(), config.recordings.end());
+  config.recordings.erase(std::unique(config.recordings.begin(), config.recordings.end()),
+                          config.recordings.end());
+
+  return config;
+}
+
+}  // namespace sketchlab

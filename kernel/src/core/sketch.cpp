@@ -1,0 +1,22 @@
+#include "sketchlab/sketch.hpp"
+
+#include <set>
+
+namespace sketchlab {
+
+std::vector<CurveId> curves_of_stroke(const Sketch& sketch, StrokeId stroke) {
+  std::vector<CurveId> out;
+  for (const auto& [id, curve] : sketch.network.curves())
+    if (curve.source_stroke == stroke) out.push_back(id);
+  return out;
+}
+
+std::vector<StrokeId> live_strokes(const Sketch& sketch) {
+  std::vector<StrokeId> out;
+  std::set<StrokeId> seen;
+  for (const HistoryEntry& entry : sketch.history.done)
+    if (entry.stroke && seen.insert(*entry.stroke).second) out.push_back(*entry.stroke);
+  return out;
+}
+
+}  // namespace sketchlab

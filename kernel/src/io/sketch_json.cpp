@@ -1,0 +1,213 @@
+#include "sketchlab/io/sketch_json.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "recording/json_codec.hpp"
+#include "sketchlab/io/text_file.hpp"
+
+namespace sketchlab {
+namespace {
+
+using json_codec::json;
+using json_codec::ojson;
+using json_codec::to_json;
+
+constexpr int sketch_format_version = 1;
+
+std::string_view keypoint_kind_name(Keypoint::Kind k) {
+  switch (k) {
+    case Keypoint::Kind::start: return "start";
+    case Keypoint::Kind::end: return "end";
+    case Keypoint::Kind::midpoint: return "midpoint";
+    case Keypoint::Kind::tick: return "tick";
+    case Keypoint::Kind::other: break;
+  }
+  return "other";
+}
+
+Keypoint::Kind keypoint_kind_from(const std::string& s, const std::string& what) {
+  for (auto k : {Keypoint::Kind::start, Keypoint::Kind::end, Keypoint::Kind::midpoint,
+                 Keypoint::Kind::tick, Keypoint::Kind::other})
+    if (keypoint_kind_name(k) == s) return k;
+  throw std::invalid_argument(what + ": unknown keypoint kind '" + s +
+                              "' (allowed: start, end, midpoint, tick, other)");
+}
+
+std::string_view ref_kind_name(ConstraintRef::Kind k) {
+  switch (k) {
+    case ConstraintRef::Kind::stroke: return "stroke";
+    case ConstraintRef::Kind::curve: return "curve";
+    case ConstraintRef::Kind::node: return "node";
+    case ConstraintRef::Kind::grid: return "grid";
+    case ConstraintRef::Kind::mirror: return "mirror";
+    case ConstraintRef::Kind::axis: break;
+  }
+  return "axis";
+}
+
+ojson constraint_to_json(const Constraint& c) {
+  ojson refs = ojson::array();
+  for (const auto& r : c.references)
+    refs.push_back(ojson{{"kind", ref_kind_name(r.kind)}, {"id", r.id}, {"t", r.parameter}});
+  return ojson{{"kind", to_string(c.kind)}, {"references", refs}, {"target", to_json(c.target)},
+               {"weight", c.weight},        {"hard", c.hard},     {"enforced", c.enforced},
+               {"residual", c.residual}};
+}
+
+ojson mesh_to_json(const Mesh& m) {
+  ojson v = ojson::array(), f = ojson::array();
+  for (const auto& p : m.vertices) v.push_back(to_json(p));
+  for (const auto& t : m.faces) f.push_back({t[0], t[1], t[2]});
+  return ojson{{"vertices", v}, {"faces", f}};
+}
+
+Vec3 vec3_from(const json& j, const std::string& what) {
+  if (!j.is_array() || j.size() != 3) throw std::invalid_argument(what + ": expected [x, y, z]");
+  Vec3 v;
+  for (int i = 0; i < 3; ++i) {
+    if (!j[i].is_number()) throw std::invalid_argument(what + ": expected numbers");
+    v[i] = j[i].get<double>();
+    if (!std::isfinite(v[i])) throw std::invalid_argument(what + ": non-finite number");
+  }
+  return v;
+}
+
+const json& field(const json& j, const char* name, const std::string& what) {
+  if (!j.is_object() || !j.contains(name))
+    throw std::invalid_argument(what + ": missing field '" + name + "'");
+  return j.at(name);
+}
+
+template <class T>
+T number(const json& j, const char* name, const std::string& what) {
+  const json& v = field(j, name, what);
+  if (!v.is_number()) throw std::invalid_argument(what + "." + name + ": expected a number");
+  return v.get<T>();
+}
+
+}  // namespace
+
+std::string sketch_to_json(const Sketch& sketch, const std::vector<StepReport>* steps) {
+  const Network& net = sketch.network;
+  ojson curves = ojson::array();
+  for (const auto& [id, c] : net.curves()) {
+    ojson keypoints = ojson::array(), normals = ojson::array();
+    for (const auto& k : c.keypoints)
+      keypoints.push_back(ojson{{"kind", keypoint_kind_name(k.kind)}, {"t", k.t}, {"position", to_json(k.position)}});
+    for (const auto& n : c.normals) normals.push_back(ojson{{"t", n.t}, {"normal", to_json(n.normal)}});
+    curves.push_back(ojson{{"id", id},
+                           {"layer", to_string(c.layer)},
+                           {"source_stroke", c.source_stroke},
+                           {"curve", to_json(c.curve)},
+                           {"keypoints", keypoints},
+                           {"normals", normals}});
+  }
+  ojson nodes = ojson::array();
+  for (const auto& [id, n] : net.nodes()) {
+    ojson inc = ojson::array();
+    for (const auto& i : n.incidences) inc.push_back(ojson{{"curve", i.curve}, {"t", i.t}});
+    nodes.push_back(ojson{{"id", id}, {"position", to_json(n.position)}, {"incidences", inc}});
+  }
+  ojson segments = ojson::array();
+  for (const auto& s : net.segments())
+    segments.push_back(ojson{{"curve", s.curve}, {"t0", s.t0}, {"t1", s.t1}, {"nodes", {s.node0, s.node1}}});
+  ojson patches = ojson::array();
+  for (const auto& [id, p] : net.patches()) {
+    ojson boundary = ojson::array();
+    for (const auto& b : p.boundary)
+      boundary.push_back(ojson{{"curve", b.curve}, {"t_from", b.t_from}, {"t_to", b.t_to},
+                               {"node_from", b.node_from}, {"node_to", b.node_to}});
+    patches.push_back(ojson{{"id", id}, {"automatic", p.automatic}, {"boundary", boundary},
+                            {"mesh", mesh_to_json(p.mesh)}});
+  }
+  ojson strokes = ojson::array();
+  for (const auto& [id, s] : sketch.strokes) strokes.push_back(id);
+  ojson constraints = ojson::array();
+  if (steps)
+    for (const auto& step : *steps) {
+      if (!step.stroke || step.constraints.empty() || step.event != "stroke") continue;
+      ojson list = ojson::array();
+      for (const auto& c : step.constraints) list.push_back(constraint_to_json(c));
+      constraints.push_back(ojson{{"stroke", *step.stroke}, {"constraints", list}});
+    }
+  const IdCounters& k = net.counters();
+  ojson root{{"format", "sketchlab-sketch"},
+             {"version", sketch_format_version},
+             {"workspace", to_json(sketch.workspace)},
+             {"counters", {{"next_curve", k.next_curve}, {"next_node", k.next_node}, {"next_patch", k.next_patch}}},
+             {"curves", curves},
+             {"nodes", nodes},
+             {"segments", segments},
+             {"patches", patches},
+             {"strokes", strokes},
+             {"constraints", constraints}};
+  return root.dump(1) + "\n";
+}
+
+Sketch read_sketch_json(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  try {
+    const json root = json::parse(read_text_file(file));
+    if (root.value("format", "") != "sketchlab-sketch")
+      throw std::invalid_argument("format: expected \"sketchlab-sketch\"");
+    if (number<int>(root, "version", "sketch") != sketch_format_version)
+      throw std::invalid_argument("version: only version " + std::to_string(sketch_format_version) +
+                                  " is supported");
+    Sketch sketch;
+    sketch.workspace = json_codec::workspace_from_json(field(root, "workspace", "sketch"), "workspace");
+    Edit edit;
+    for (const json& c : field(root, "curves", "sketch")) {
+      NetworkCurve nc;
+      const std::string what = "curve " + field(c, "id", "curve").dump();
+      nc.id = number<CurveId>(c, "id", what);
+      nc.layer = layer_from_string(field(c, "layer", what).get<std::string>());
+      nc.source_stroke = number<StrokeId>(c, "source_stroke", what);
+      nc.curve = json_codec::curve_from_json(field(c, "curve", what), what + ".curve");
+      for (const json& k : field(c, "keypoints", what))
+        nc.keypoints.push_back({keypoint_kind_from(field(k, "kind", what).get<std::string>(), what),
+                                number<double>(k, "t", what), vec3_from(field(k, "position", what), what)});
+      for (const json& n : field(c, "normals", what))
+        nc.normals.push_back({number<double>(n, "t", what), vec3_from(field(n, "normal", what), what)});
+      edit.curves_added.push_back(std::move(nc));
+    }
+    for (const json& n : field(root, "nodes", "sketch")) {
+      Node node;
+      const std::string what = "node " + field(n, "id", "node").dump();
+      node.id = number<NodeId>(n, "id", what);
+      node.position = vec3_from(field(n, "position", what), what + ".position");
+      for (const json& i : field(n, "incidences", what))
+        node.incidences.push_back({number<CurveId>(i, "curve", what), number<double>(i, "t", what)});
+      edit.nodes_added.push_back(std::move(node));
+    }
+    for (const json& p : field(root, "patches", "sketch")) {
+      Patch patch;
+      const std::string what = "patch " + field(p, "id", "patch").dump();
+      patch.id = number<PatchId>(p, "id", what);
+      patch.automatic = field(p, "automatic", what).get<bool>();
+      for (const json& b : field(p, "boundary", what))
+        patch.boundary.push_back({number<CurveId>(b, "curve", what), number<double>(b, "t_from", what),
+                                  number<double>(b, "t_to", what), number<NodeId>(b, "node_from", what),
+                                  number<NodeId>(b, "node_to", what)});
+      const json& mesh = field(p, "mesh", what);
+      for (const json& v : field(mesh, "vertices", what)) patch.mesh.vertices.push_back(vec3_from(v, what));
+      for (const json& f : field(mesh, "faces", what)) {
+        if (!f.is_array() || f.size() != 3) throw std::invalid_argument(what + ": faces must be triangles");
+        patch.mesh.faces.push_back({f[0].get<int>(), f[1].get<int>(), f[2].get<int>()});
+      }
+      edit.patches_added.push_back(std::move(patch));
+    }
+    const json& k = field(root, "counters", "sketch");
+    edit.counters = IdCounters{number<CurveId>(k, "next_curve", "counters"),
+                               number<NodeId>(k, "next_node", "counters"),
+                               number<PatchId>(k, "next_patch", "counters")};
+    sketch.network.apply(edit);
+    return sketch;
+  } catch (const json::exception& e) {
+    throw std::runtime_error(name + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(name + ": " + e.what());
+  }
+}
+
+}  // namespace sketchlab

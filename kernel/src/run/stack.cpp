@@ -1,0 +1,56 @@
+#include "sketchlab/run/stack.hpp"
+
+#include <stdexcept>
+
+namespace sketchlab {
+
+StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host) {
+  StackInstance s;
+  s.name = stack.name;
+  try {
+    s.corrector = host.make_corrector(stack.corrector.plugin, stack.corrector.params);
+  } catch (const ParamError& e) {
+    rethrow_param_error(e, stack.corrector);
+  } catch (const PluginError& e) {
+    throw ConfigError(stack.corrector.location.to_string() + ": " + e.what());
+  }
+  if (stack.surfacer) {
+    try {
+      s.surfacer = host.make_surfacer(stack.surfacer->plugin, stack.surfacer->params);
+    } catch (const ParamError& e) {
+      rethrow_param_error(e, *stack.surfacer);
+    } catch (const PluginError& e) {
+      throw ConfigError(stack.surfacer->location.to_string() + ": " + e.what());
+    }
+  }
+  return s;
+}
+
+std::shared_ptr<Input> instantiate_input(const StackConfig& stack, const PluginHost& host,
+                                         const std::filesystem::path& recording) {
+  PluginChoice choice;
+  choice.plugin = "replay";
+  choice.location = stack.location;
+  if (stack.input) choice = *stack.input;
+  if (choice.plugin == "replay") choice.params["path"] = recording.string();
+  try {
+    return host.make_input(choice.plugin, choice.params);
+  } catch (const ParamError& e) {
+    rethrow_param_error(e, choice);
+  } catch (const PluginError& e) {
+    throw ConfigError(choice.location.to_string() + ": " + e.what());
+  }
+}
+
+ReplayResult replay(Input& input, const StackInstance& stack) {
+  const RecordingHeader header = input.header();
+  ReplayResult result{stack.name, header, Session(header.workspace, stack.corrector, stack.surfacer),
+                      {}};
+  while (auto event = input.next()) result.steps.push_back(result.session.handle(*event));
+  if (auto error = input.error(); !error.empty())
+    throw std::runtime_error("input failed after " + std::to_string(result.steps.size()) +
+                             " events: " + error);
+  return result;
+}
+
+}  // namespace sketchlab

@@ -1,0 +1,225 @@
+#include "sketchlab/session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sketchlab/geometry/closest_point.hpp"
+
+namespace sketchlab {
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+void count_edit(const Edit& e, StepReport& r) {
+  r.curves_added += static_cast<int>(e.curves_added.size());
+  r.curves_removed += static_cast<int>(e.curves_removed.size());
+  r.curves_replaced += static_cast<int>(e.curves_replaced.size());
+  r.patches_added += static_cast<int>(e.patches_added.size());
+  r.patches_removed += static_cast<int>(e.patches_removed.size());
+}
+
+// A surfacer may only touch patches; anything else would bypass the corrector.
+std::string check_patch_only(const Edit& e) {
+  if (!e.curves_added.empty() || !e.curves_replaced.empty() || !e.curves_removed.empty() ||
+      !e.nodes_added.empty() || !e.nodes_replaced.empty() || !e.nodes_removed.empty() ||
+      e.counters)
+    return "surfacer returned an edit that changes curves or nodes; only patches are allowed";
+  return {};
+}
+
+}  // namespace
+
+Edit freehand_edit(const Stroke& stroke, const Sketch& sketch, const PreprocessParams& params) {
+  NetworkCurve curve;
+  curve.id = sketch.network.next_curve_id();
+  curve.curve = preprocess_stroke(stroke, params).curve;
+  curve.layer = stroke.layer == Layer::automatic ? Layer::free : stroke.layer;
+  curve.source_stroke = stroke.id;
+  curve.keypoints = default_keypoints(curve.curve);
+  Edit edit;
+  edit.curves_added.push_back(std::move(curve));
+  return edit;
+}
+
+Session::Session(const Workspace& workspace, std::shared_ptr<Corrector> corrector,
+                 std::shared_ptr<Surfacer> surfacer, PreprocessParams fallback)
+    : corrector_(std::move(corrector)), surfacer_(std::move(surfacer)), fallback_(fallback) {
+  if (!corrector_) throw std::invalid_argument("Session: a corrector is required");
+  sketch_.workspace = workspace;
+}
+
+void Session::apply_step(const Edit& edit, HistoryEntry& entry, StepReport& report) {
+  if (edit.empty()) return;
+  Edit inverse = sketch_.network.apply(edit);
+  count_edit(edit, report);
+  entry.steps.push_back({edit, std::move(inverse)});
+}
+
+void Session::apply_surfacer(const SurfaceUpdate& update, HistoryEntry& entry, StepReport& report) {
+  if (!update.error.empty()) {
+    report.error = "surfacer: " + update.error;
+    return;
+  }
+  if (auto why = check_patch_only(update.edit); !why.empty()) {
+    report.error = why;
+    return;
+  }
+  try {
+    apply_step(update.edit, entry, report);
+  } catch (const std::invalid_argument& e) {
+    report.error = std::string("surfacer returned an invalid edit: ") + e.what();
+  }
+}
+
+void Session::commit(HistoryEntry entry) {
+  if (entry.steps.empty()) return;
+  sketch_.history.done.push_back(std::move(entry));
+  sketch_.history.undone.clear();
+}
+
+StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
+  report.stroke = input.id;
+  if (auto why = validate(input); !why.empty()) {
+    report.error = why;
+    return report;
+  }
+  if (sketch_.strokes.count(input.id)) {
+    report.error = "stroke id " + std::to_string(input.id) + " was already used in this session";
+    return report;
+  }
+  Stroke stroke = input;
+  if (stroke.layer == Layer::automatic) stroke.layer = sketch_.mode;
+  sketch_.strokes.emplace(stroke.id, stroke);
+
+  HistoryEntry entry{"stroke", stroke.id, {}};
+  const auto start = std::chrono::steady_clock::now();
+  Edit edit;
+  if (sketch_.correction_enabled) {
+    Correction c = corrector_->correct(stroke, sketch_);
+    report.corrected = true;
+    report.stats = std::move(c.stats);
+    report.constraints = std::move(c.constraints);
+    if (!c.error.empty()) {
+      report.error = "corrector: " + c.error;
+      return report;
+    }
+    edit = std::move(c.edit);
+  } else {
+    try {
+      edit = freehand_edit(stroke, sketch_, fallback_);
+    } catch (const std::exception& e) {
+      report.error = e.what();
+      return report;
+    }
+  }
+  try {
+    apply_step(edit, entry, report);
+  } catch (const std::invalid_argument& e) {
+    report.error = std::string("corrector returned an invalid edit: ") + e.what();
+    return report;
+  }
+  if (surfacer_ && !entry.steps.empty())
+    apply_surfacer(surfacer_->update(sketch_, entry.steps.back().forward), entry, report);
+  report.latency_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  commit(std::move(entry));
+  return report;
+}
+
+StepReport Session::remove_curves(const std::vector<CurveId>& curves, const std::string& action,
+                                  StepReport report) {
+  if (curves.empty()) {
+    report.error = action + ": no curve to delete";
+    return report;
+  }
+  HistoryEntry entry{action, std::nullopt, {}};
+  Edit edit;
+  edit.curves_removed = curves;
+  apply_step(edit, entry, report);
+  if (surfacer_) apply_surfacer(surfacer_->update(sketch_, edit), entry, report);
+  commit(std::move(entry));
+  return report;
+}
+
+StepReport Session::handle(const Event& event) {
+  StepReport report;
+  report.event = std::string(event_type_name(event.payload));
+  report.time = event.time;
+  auto undo_redo = [&](std::vector<HistoryEntry>& from, std::vector<HistoryEntry>& to, bool undo) {
+    if (from.empty()) {
+      report.error = undo ? "nothing to undo" : "nothing to redo";
+      return;
+    }
+    HistoryEntry entry = std::move(from.back());
+    from.pop_back();
+    if (undo) {
+      for (auto it = entry.steps.rbegin(); it != entry.steps.rend(); ++it) {
+        count_edit(it->inverse, report);
+        it->forward = sketch_.network.apply(it->inverse);
+      }
+    } else {
+      for (auto& step : entry.steps) {
+        count_edit(step.forward, report);
+        step.inverse = sketch_.network.apply(step.forward);
+      }
+    }
+    report.stroke = entry.stroke;
+    to.push_back(std::move(entry));
+  };
+
+  std::visit(
+      Overloaded{
+          [&](const StrokeEvent& e) { report = handle_stroke(e.stroke, std::move(report)); },
+          [&](const UndoEvent&) { undo_redo(sketch_.history.done, sketch_.history.undone, true); },
+          [&](const RedoEvent&) { undo_redo(sketch_.history.undone, sketch_.history.done, false); },
+          [&](const DeleteNearEvent& e) {
+            auto hits = sketch_.network.curves_near(e.point, e.radius);
+            std::vector<CurveId> ids;
+            if (!hits.empty()) ids.push_back(hits.front().curve);
+            report = remove_curves(ids, "delete", std::move(report));
+          },
+          [&](const DeleteStrokeEvent& e) {
+            report.stroke = e.stroke;
+            report = remove_curves(curves_of_stroke(sketch_, e.stroke), "delete", std::move(report));
+          },
+          [&](const ModeEvent& e) { sketch_.mode = e.mode; },
+          [&](const WorkspaceEvent& e) {
+            if (!(e.workspace.scale > 0.0) || !std::isfinite(e.workspace.scale))
+              report.error = "workspace scale must be a finite number > 0";
+            else
+              sketch_.workspace = e.workspace;
+          },
+          [&](const CorrectionEvent& e) { sketch_.correction_enabled = e.enabled; },
+          [&](const AddPatchEvent& e) {
+            if (!surfacer_) {
+              report.error = "add_patch: this stack has no surfacer";
+              return;
+            }
+            HistoryEntry entry{"add_patch", std::nullopt, {}};
+            apply_surfacer(surfacer_->command(sketch_, e), entry, report);
+            commit(std::move(entry));
+          },
+          [&](const DeletePatchEvent& e) {
+            if (!surfacer_) {
+              report.error = "delete_patch: this stack has no surfacer";
+              return;
+            }
+            HistoryEntry entry{"delete_patch", std::nullopt, {}};
+            apply_surfacer(surfacer_->command(sketch_, e), entry, report);
+            commit(std::move(entry));
+          },
+          [&](const ReferenceEvent& e) { references_[e.track][e.stroke] = e.curve; },
+      },
+      event.payload);
+  return report;
+}
+
+}  // namespace sketchlab

@@ -1,0 +1,261 @@
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "sketchlab/recording/cassie_import.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+#include "sketchlab/recording/recording_writer.hpp"
+#include "test_paths.hpp"
+
+using namespace sketchlab;
+using nlohmann::json;
+
+namespace {
+
+const char* const sessions[] = {"hat", "chair", "01-2-1", "02-1-2"};
+
+std::filesystem::path cassie_dir() { return test::source_path("data/cassie"); }
+
+json load(const std::string& rel) {
+  std::ifstream in(cassie_dir() / rel);
+  return json::parse(in);
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+Vec3 vec(const json& a) { return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}; }
+
+}  // namespace
+
+// The bundled recordings are the importer's output; set
+// SKETCHLAB_REGENERATE_RECORDINGS=1 to rewrite them after a deliberate change.
+TEST_CASE("importing the bundled CASSIE sessions reproduces data/recordings byte for byte",
+          "[recording][cassie]") {
+  const bool regenerate = std::getenv("SKETCHLAB_REGENERATE_RECORDINGS") != nullptr;
+  for (const char* name : sessions) {
+    INFO(name);
+    const Recording r = import_cassie_session(cassie_dir(), name);
+    std::ostringstream os;
+    write_recording(os, r);
+    const std::filesystem::path bundled =
+        test::source_path("data/recordings/" + std::string(name) + ".jsonl");
+    if (regenerate) write_recording(bundled, r, /*overwrite=*/true);
+    CHECK(os.str() == slurp(bundled));
+    CHECK(read_recording(bundled) == r);
+  }
+}
+
+TEST_CASE("CASSIE import: strokes, deletions and reference curves match the history",
+          "[recording][cassie]") {
+  for (const char* name : sessions) {
+    INFO(name);
+    const json history = load("sketch_history/" + std::string(name) + ".json");
+    const Recording r = import_cassie_session(cassie_dir(), name);
+
+    std::vector<const Stroke*> strokes;
+    std::map<StrokeId, double> deletions;
+    std::map<StrokeId, const ReferenceEvent*> refs;
+    double last_time = -1.0;
+    for (std::size_t i = 0; i < r.events.size(); ++i) {
+      const Event& e = r.events[i];
+      CHECK(e.time >= last_time);
+      last_time = e.time;
+      if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) {
+        strokes.push_back(&s->stroke);
+        // The reference curve comes right after its stroke.
+        REQUIRE(i + 1 < r.events.size());
+        const auto* ref = std::get_if<ReferenceEvent>(&r.events[i + 1].payload);
+        REQUIRE(ref);
+        CHECK(ref->stroke == s->stroke.id);
+        CHECK(ref->track == "cassie");
+        refs[ref->stroke] = ref;
+      } else if (const auto* d = std::get_if<DeleteStrokeEvent>(&e.payload)) {
+        CHECK(deletions.emplace(d->stroke, e.time).second);
+      }
+    }
+    REQUIRE(strokes.size() == history.size());
+    std::size_t deleted = 0;
+    for (std::size_t i = 0; i < history.size(); ++i) {
+      const json& h = history[i];
+      const Stroke& s = *strokes[i];
+      CHECK(s.id == h["id"].get<StrokeId>());
+      CHECK(s.layer == Layer::automatic);
+      REQUIRE(s.samples.size() == h["input_samples"].size());
+      for (std::size_t k = 0; k < s.samples.size(); ++k) {
+        CHECK(s.samples[k].position == vec(h["input_samples"][k]));
+        CHECK(s.samples[k].pressure == 1.0);
+        if (k > 0) CHECK(s.samples[k].time >= s.samples[k - 1].time);
+      }
+      CHECK(s.samples.back().time == h["creation_time"].get<double>());
+      CHECK(s.samples.front().time < s.samples.back().time);
+      CHECK(s.workspace_scale >= 1.0);
+      CHECK(s.workspace_scale <= 3.0);
+      if (h["deletion_time"].is_null()) {
+        CHECK(deletions.count(s.id) == 0);
+      } else {
+        ++deleted;
+        REQUIRE(deletions.count(s.id) == 1);
+        CHECK(deletions.at(s.id) == h["deletion_time"].get<double>());
+      }
+      // Reference curve = CASSIE's ctrl_pts joined.
+      const Curve& c = refs.at(s.id)->curve;
+      const json& ctrl = h["ctrl_pts"];
+      if (h["curve_type"] == "line") {
+        CHECK(c.kind == CurveKind::line);
+        CHECK(c.control_points.front() == vec(ctrl[0][0]));
+        CHECK(c.control_points.back() == vec(ctrl[0][1]));
+      } else {
+        CHECK(c.kind == CurveKind::bezier);
+        REQUIRE(c.segment_count() == static_cast<int>(ctrl.size()));
+        for (std::size_t k = 0; k < ctrl.size(); ++k) {
+          for (std::size_t m = 0; m < 4; ++m) CHECK(c.control_points[3 * k + m] == vec(ctrl[k][m]));
+        }
+      }
+    }
+    CHECK(deleted == deletions.size());
+  }
+}
+
+TEST_CASE("CASSIE import: canvas scale and mirroring come from raw_data", "[recording][cassie]") {
+  for (const char* name : sessions) {
+    INFO(name);
+    const json raw = load("raw_data/" + std::string(name) + ".json");
+    const Recording r = import_cassie_session(cassie_dir(), name);
+    const json& states = raw["systemStates"];
+    CHECK(r.header.workspace.mirror_enabled == states[0]["mirroring"].get<bool>());
+    std::size_t toggles = 0;
+    for (std::size_t i = 1; i < states.size(); ++i) {
+      toggles += states[i]["mirroring"] != states[i - 1]["mirroring"];
+    }
+    bool mirror = r.header.workspace.mirror_enabled;
+    std::size_t workspace_events = 0;
+    for (const Event& e : r.events) {
+      if (const auto* w = std::get_if<WorkspaceEvent>(&e.payload)) {
+        ++workspace_events;
+        CHECK(w->workspace.mirror_enabled != mirror);
+        mirror = w->workspace.mirror_enabled;
+      }
+      if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) {
+        // The canvas scale in force at creation: the last state at or before it.
+        double scale = 1.0;
+        for (const json& st : states) {
+          if (st["time"].get<double>() <= e.time) scale = st["canvasScale"].get<double>();
+        }
+        CHECK(s->stroke.workspace_scale == scale);
+      }
+    }
+    CHECK(workspace_events == toggles);
+    CHECK(r.header.source.at("session") == name);
+    CHECK(r.header.source.at("dataset") == "CASSIE (Yu et al., CHI 2021)");
+    CHECK(r.header.source.at("license") == "MIT");
+  }
+  // 01-2-1 zooms in to almost 3x.
+  const Recording lamp = import_cassie_session(cassie_dir(), "01-2-1");
+  double max_scale = 0.0;
+  for (const Event& e : lamp.events) {
+    if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) max_scale = std::max(max_scale, s->stroke.workspace_scale);
+  }
+  CHECK(max_scale > 2.9);
+}
+
+TEST_CASE("CASSIE import infers the grid for hat and chair only", "[recording][cassie]") {
+  for (const char* name : {"hat", "chair"}) {
+    const Recording r = import_cassie_session(cassie_dir(), name);
+    INFO(name << ": " << r.header.source.at("grid"));
+    CHECK(r.header.workspace.grid_enabled);
+    CHECK(r.header.workspace.grid_spacing == 0.25);
+    CHECK(r.header.workspace.grid_origin == Vec3::Constant(0.125));
+    CHECK_THAT(r.header.source.at("grid"), Catch::StartsWith("spacing 0.25 m, origin (0.125"));
+    // Mirror planes inferred from the mirrored twins: x = 0.125 in both.
+    CHECK(r.header.workspace.mirror_normal == Vec3::UnitX());
+    CHECK(r.header.workspace.mirror_offset == 0.125);
+  }
+  for (const char* name : {"01-2-1", "02-1-2"}) {
+    const Recording r = import_cassie_session(cassie_dir(), name);
+    INFO(name << ": " << r.header.source.at("grid"));
+    CHECK_FALSE(r.header.workspace.grid_enabled);
+    CHECK_THAT(r.header.source.at("grid"), Catch::StartsWith("none"));
+  }
+  const Recording lamp = import_cassie_session(cassie_dir(), "01-2-1");
+  CHECK(lamp.header.workspace.mirror_normal == Vec3::UnitZ());
+  CHECK(lamp.header.workspace.mirror_offset == 0.75);
+  CHECK(lamp.header.source.at("system") == "patch");
+  const Recording shoe = import_cassie_session(cassie_dir(), "02-1-2");
+  CHECK(shoe.header.workspace.mirror_offset == 0.0);
+  CHECK(shoe.header.source.at("system") == "armature");
+}
+
+TEST_CASE("infer_grid finds a planted lattice and ignores free-hand points", "[recording][cassie]") {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 200; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  GridInference none = infer_grid(pts);
+  CHECK_FALSE(none.found);
+  CHECK(none.total == 200);
+  // Two snapped points are not enough evidence.
+  pts.emplace_back(0.1, 0.3, -0.5);
+  pts.emplace_back(0.7, 0.1, 0.1);
+  CHECK_FALSE(infer_grid(pts).found);
+  for (int i = 0; i < 5; ++i) pts.emplace_back(0.1 + 0.2 * i, -0.1, 0.3 + 1e-7);
+  const GridInference g = infer_grid(pts);
+  CHECK(g.found);
+  CHECK(g.spacing == 0.2);
+  CHECK(g.origin == Vec3::Constant(0.1));
+  CHECK(g.matched == 7);
+}
+
+TEST_CASE("infer_mirror_plane recovers an axis plane and rejects oblique twins", "[recording][cassie]") {
+  std::vector<std::pair<std::vector<Vec3>, std::vector<Vec3>>> twins(1);
+  for (int i = 0; i < 5; ++i) {
+    const Vec3 p(0.1 * i, 0.3, 0.9 + 0.05 * i);
+    twins[0].first.push_back(p);
+    twins[0].second.push_back(Vec3(p.x(), p.y(), 1.5 - p.z()));
+  }
+  const MirrorInference m = infer_mirror_plane(twins);
+  CHECK(m.found);
+  CHECK(m.normal == Vec3::UnitZ());
+  CHECK(m.offset == Approx(0.75).margin(1e-15));
+  twins[0].second[2].x() += 0.01;
+  CHECK_FALSE(infer_mirror_plane(twins).found);
+  CHECK_FALSE(infer_mirror_plane({}).found);
+}
+
+TEST_CASE("CASSIE import errors name the file and the field", "[recording][cassie]") {
+  const std::filesystem::path dir = test::binary_path("tests/scratch/cassie_errors");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "sketch_history");
+  std::filesystem::create_directories(dir / "raw_data");
+  const std::filesystem::path raw = cassie_dir() / "raw_data" / "hat.json";
+  std::filesystem::copy_file(raw, dir / "raw_data" / "s.json");
+  auto write = [&](const std::string& text) {
+    std::ofstream(dir / "sketch_history" / "s.json", std::ios::trunc) << text;
+  };
+  const std::string hist = (dir / "sketch_history" / "s.json").string();
+
+  CHECK_THROWS_WITH(import_cassie_session(dir, "missing"),
+                    Catch::Contains("missing.json") && Catch::Contains("cannot open"));
+  write("[{\"id\": 0,");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"),
+                    Catch::Contains(hist) && Catch::Contains("malformed JSON"));
+  write(R"([{"id":0,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"),
+                    Catch::Contains(hist) && Catch::Contains("missing field 'creation_time'"));
+  write(R"([{"id":0,"input_samples":[[0,0,0],[1,null,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"), Catch::Contains("input_samples[1][1]"));
+  write(R"([{"id":0,"input_samples":[[0,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"), Catch::Contains("at least 2"));
+  write(R"([{"id":0,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"spline","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"), Catch::Contains("curve_type"));
+  write(R"([{"id":0,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
+  const Recording ok = import_cassie_session(dir, "s");
+  CHECK(ok.events.size() == 2 + 3);  // stroke, reference, 3 mirror toggles of hat's raw data
+}
