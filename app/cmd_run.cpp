@@ -1,68 +1,67 @@
 // `sketchlab run [EXPERIMENT.yaml] [key.path=value ...]`: replay each
-// recording through each stack and write the results.
+// recording through each stack (and sweep point) and write the results.
+#include <unistd.h>
+
+#include <cstdio>
 #include <iostream>
 
 #include "commands.hpp"
 #include "default_paths.hpp"
+#include "progress_line.hpp"
 #include "sketchlab/config/config.hpp"
-#include "sketchlab/io/mesh_export.hpp"
-#include "sketchlab/io/sketch_json.hpp"
-#include "sketchlab/io/stroke_csv.hpp"
-#include "sketchlab/io/text_file.hpp"
-#include "sketchlab/run/stack.hpp"
+#include "sketchlab/run/experiment_runner.hpp"
+#ifdef SKETCHLAB_HAVE_VIEWER
+#include "sketchlab/viewer/render_png.hpp"
+#endif
 
 namespace sketchlab::cli {
 namespace {
 
-struct RunOptions {
+struct RunCommandOptions {
   std::string experiment;
   std::vector<std::string> overrides;
   bool no_timings = false;
+  int jobs = 0;
 };
 
-// Runs one (recording, stack) case; returns false if it failed.
-bool run_case(const ExperimentConfig& config, const StackConfig& stack_config,
-              const PluginHost& host, const std::filesystem::path& recording, bool timings) {
-  const std::string label = recording.stem().string() + " x " + stack_config.name;
-  try {
-    const StackInstance stack = instantiate_stack(stack_config, host);
-    auto input = instantiate_input(stack_config, host, recording);
-    const ReplayResult result = replay(*input, stack);
-    const auto dir = config.outputs.dir / config.name / recording.stem() / stack_config.name;
-    const Sketch& sketch = result.session.sketch();
-    if (config.outputs.sketch_json)
-      write_text_file(dir / "sketch.json", sketch_to_json(sketch, &result.steps));
-    if (config.outputs.stroke_csv)
-      write_text_file(dir / "strokes.csv", steps_to_csv(result.steps, timings));
-    if (config.outputs.ply) write_text_file(dir / "sketch.ply", network_to_ply(sketch.network));
-    if (config.outputs.obj) write_text_file(dir / "sketch.obj", network_to_obj(sketch.network));
-    int errors = 0;
-    for (const auto& s : result.steps) errors += !s.error.empty();
-    std::cout << label << ": " << result.steps.size() << " events, " << sketch.network.curves().size()
-              << " curves, " << sketch.network.nodes().size() << " nodes, "
-              << sketch.network.patches().size() << " patches, " << errors
-              << " events refused -> " << dir.string() << "\n";
-    return true;
-  } catch (const std::exception& e) {
-    std::cerr << label << ": FAILED: " << e.what() << "\n";
-    return false;
-  }
+Renderer make_renderer() {
+#ifdef SKETCHLAB_HAVE_VIEWER
+  return [](const std::filesystem::path& png,
+            const std::vector<std::pair<std::string, const Sketch*>>& panels) {
+    std::vector<viewer::Panel> vp;
+    std::vector<const Sketch*> sketches;
+    for (const auto& [title, sketch] : panels) {
+      vp.push_back({title, sketch, nullptr,
+                    std::to_string(sketch->network.curves().size()) + " curves, " +
+                        std::to_string(sketch->network.nodes().size()) + " nodes, " +
+                        std::to_string(sketch->network.patches().size()) + " patches"});
+      sketches.push_back(sketch);
+    }
+    const int width = 640 * static_cast<int>(vp.size()), height = 640;
+    const auto camera = viewer::fit_camera(sketches, viewer::ViewDirection::iso, 1.0);
+    viewer::render_png(vp, camera, width, height, png);
+  };
+#else
+  return {};
+#endif
 }
 
 }  // namespace
 
 void add_run_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
-      "run", "Replay each recording of an experiment through each stack and write, per case, the "
-             "final sketch (JSON) and per-event statistics (CSV)");
-  auto opts = std::make_shared<RunOptions>();
+      "run", "Replay each recording of an experiment through each stack and sweep point, in "
+             "parallel, and write sketches, statistics, meshes, pictures and a report");
+  auto opts = std::make_shared<RunCommandOptions>();
   cmd->add_option("experiment", opts->experiment,
                   "Experiment YAML (default: the bundled configs/default.yaml)");
   cmd->add_option("overrides", opts->overrides,
                   "Overrides key.path=value, e.g. outputs.dir=/tmp/out "
                   "stacks.0.corrector.params.delta=0.03");
   cmd->add_flag("--no-timings", opts->no_timings,
-                "Write latencies as 0 so repeated runs give byte-identical files");
+                "Write latencies and times as 0 so repeated runs give byte-identical files");
+  cmd->add_option("-j,--jobs", opts->jobs, "Cases run in parallel (default: one per core)")
+      ->check(CLI::Range(0, 256));
   cmd->callback([opts, &exit_code] {
     std::vector<Override> overrides;
     std::string experiment = opts->experiment;
@@ -81,15 +80,28 @@ void add_run_command(CLI::App& app, int& exit_code) {
     for (const auto& e : host.errors())
       std::cerr << "warning: plugin " << e.path.string() << " not loaded: " << e.reason << "\n";
 
-    int failed = 0;
-    for (const auto& recording : config.recordings)
-      for (const auto& stack : config.stacks)
-        failed += !run_case(config, stack, host, recording, !opts->no_timings);
-    const auto total = config.recordings.size() * config.stacks.size();
-    std::cout << (total - failed) << " of " << total << " cases done";
-    if (failed) std::cout << ", " << failed << " failed";
-    std::cout << "\n";
-    exit_code = failed ? 1 : 0;
+    ProgressLine progress(std::cerr, isatty(fileno(stderr)) != 0);
+    RunOptions options;
+    options.jobs = opts->jobs;
+    options.timings = !opts->no_timings;
+    options.progress = [&progress](const Progress& p) { progress.update(p); };
+    options.renderer = make_renderer();
+    if (config.outputs.pictures && !options.renderer)
+      std::cerr << "warning: pictures requested but this build has no viewer (VTK); skipping them\n";
+    const RunSummary summary = run_experiment(config, host, options);
+    progress.finish();
+
+    for (const auto& c : summary.cases)
+      if (!c.ok)
+        std::cerr << "FAILED " << c.recording.stem().string() << " x " << c.variant.stack.name << ": "
+                  << c.error << "\n";
+    std::cout << (summary.cases.size() - summary.failed()) << " of " << summary.cases.size()
+              << " cases done";
+    if (summary.failed()) std::cout << ", " << summary.failed() << " failed";
+    std::cout << "; results in " << summary.run_dir.string() << "\n";
+    if (config.outputs.report)
+      std::cout << "report: " << (summary.run_dir / "report.html").string() << "\n";
+    exit_code = summary.failed() ? 1 : 0;
   });
 }
 

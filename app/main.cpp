@@ -13,6 +13,11 @@ int main(int argc, char** argv) {
   sketchlab::cli::add_plugins_command(app, exit_code);
   sketchlab::cli::add_run_command(app, exit_code);
   sketchlab::cli::add_convert_command(app, exit_code);
+#ifdef SKETCHLAB_HAVE_VIEWER
+  sketchlab::cli::add_render_command(app, exit_code);
+#endif
+  sketchlab::cli::add_teacher_forced_command(app, exit_code);
+  sketchlab::cli::add_record_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -32,7 +32,7 @@ fs::path write_experiment(const fs::path& dir, const std::string& recording) {
   std::ofstream(file) << "experiment: e2e\n"
                       << "recordings: [" << recording << "]\n"
                       << "stacks:\n  - name: freehand\n    corrector: {plugin: freehand}\n"
-                      << "outputs: {dir: " << (dir / "runs").string() << ", ply: true, obj: true}\n";
+                      << "outputs: {dir: " << (dir / "runs").string() << ", timestamp: false, ply: true, obj: true}\n";
   return file;
 }
 
@@ -58,7 +58,7 @@ TEST_CASE("replaying hat through freehand gives one curve per stroke alive at th
   for (const auto& c : sketch["curves"]) sources.insert(c["source_stroke"].get<StrokeId>());
   CHECK(sources.size() == alive.size());
   CHECK(std::set<StrokeId>(sources.begin(), sources.end()) == alive);
-  CHECK(fs::file_size(out / "sketch.ply") > 0);
+  CHECK(fs::file_size(out / "curves.ply") > 0);
   CHECK(fs::file_size(out / "sketch.obj") > 0);
   CHECK(fs::file_size(out / "strokes.csv") > 0);
 }
@@ -70,7 +70,7 @@ TEST_CASE("replaying twice gives byte-identical output", "[app][slow]") {
                   dir / "a.txt") == 0);
   REQUIRE(run_cli("run --no-timings " + exp.string() + " outputs.dir=" + (dir / "b").string(),
                   dir / "b.txt") == 0);
-  for (const char* f : {"sketch.json", "strokes.csv", "sketch.ply", "sketch.obj"}) {
+  for (const char* f : {"sketch.json", "strokes.csv", "curves.ply", "sketch.obj"}) {
     INFO(f);
     CHECK(read_text_file(dir / "a/e2e/hat/freehand" / f) ==
           read_text_file(dir / "b/e2e/hat/freehand" / f));

@@ -5,6 +5,9 @@
 #include <string>
 #include <variant>
 
+#include <vector>
+
+#include "sketchlab/constraint.hpp"
 #include "sketchlab/curve.hpp"
 #include "sketchlab/stroke.hpp"
 #include "sketchlab/workspace.hpp"
@@ -37,10 +40,23 @@ struct ReferenceEvent {
   bool operator==(const ReferenceEvent&) const = default;
 };
 
+// A relation the strokes were meant to satisfy (e.g. synthetic ground truth):
+// `parameters` are the curve parameters t where it holds, one per stroke, on
+// each stroke's reference curve of the same track (intersection, coincident
+// point); empty for kinds without a location (parallel, planar, ...). Like a
+// reference, it does not change the sketch.
+struct RelationEvent {
+  std::string track;  // "ground_truth", ...
+  ConstraintKind kind = ConstraintKind::coincident_point;
+  std::vector<StrokeId> strokes;
+  std::vector<double> parameters;
+  bool operator==(const RelationEvent&) const = default;
+};
+
 using EventPayload = std::variant<StrokeEvent, UndoEvent, RedoEvent, DeleteNearEvent,
                                   DeleteStrokeEvent, ModeEvent, WorkspaceEvent,
                                   CorrectionEvent, AddPatchEvent, DeletePatchEvent,
-                                  ReferenceEvent>;
+                                  ReferenceEvent, RelationEvent>;
 
 struct Event {
   double time = 0.0;  // seconds since the session started

@@ -48,6 +48,8 @@ class Session {
   const Sketch& sketch() const { return sketch_; }
   // Reference curves by track then stroke (from ReferenceEvents).
   const std::map<std::string, std::map<StrokeId, Curve>>& references() const { return references_; }
+  // Intended relations by track, in event order (from RelationEvents).
+  const std::map<std::string, std::vector<RelationEvent>>& relations() const { return relations_; }
 
  private:
   StepReport handle_stroke(const Stroke& stroke, StepReport report);
@@ -62,6 +64,7 @@ class Session {
   std::shared_ptr<Surfacer> surfacer_;
   PreprocessParams fallback_;
   std::map<std::string, std::map<StrokeId, Curve>> references_;
+  std::map<std::string, std::vector<RelationEvent>> relations_;
 };
 
 // The edit that adds `stroke` as one fitted curve (preprocessing only, no

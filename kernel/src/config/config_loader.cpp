@@ -17,8 +17,11 @@ using Path = std::vector<std::string>;
 
 const std::vector<std::string> stack_keys = {"name", "input", "corrector", "surfacer"};
 const std::vector<std::string> plugin_keys = {"plugin", "params"};
-const std::vector<std::string> experiment_keys = {"experiment", "recordings", "stacks", "outputs"};
-const std::vector<std::string> output_keys = {"dir", "sketch_json", "stroke_csv", "ply", "obj"};
+const std::vector<std::string> experiment_keys = {"experiment", "recordings", "stacks", "outputs",
+                                                  "sweep"};
+const std::vector<std::string> output_keys = {"dir", "sketch_json", "stroke_csv", "ply", "obj",
+                                              "mlp", "pictures", "report", "timestamp"};
+const std::vector<std::string> range_keys = {"from", "to", "step"};
 
 std::string join(const std::vector<std::string>& items) {
   std::string text;
@@ -257,6 +260,80 @@ void name_stacks(std::vector<StackConfig>& stacks) {
   }
 }
 
+// Values of one sweep axis: a list, or a range {from, to, step} (inclusive,
+// to within 1e-9 of a step).
+std::vector<std::string> sweep_values(const Reader& reader, const YAML::Node& node, const Path& path) {
+  std::vector<std::string> values;
+  if (node.IsSequence() && node.size() > 0) {
+    for (const auto& v : node) {
+      if (!v.IsScalar()) reader.fail(v, path, "sweep values must be plain values (numbers, true/false, names)");
+      // Values are applied as override text (parsed as YAML again): keep
+      // quoted scalars quoted so "true" stays a string.
+      if (v.Tag() != "!") {
+        values.push_back(v.Scalar());
+        continue;
+      }
+      std::string quoted = "\"";
+      for (char c : v.Scalar()) quoted += (c == '"' || c == '\\') ? std::string{'\\', c} : std::string{c};
+      values.push_back(quoted + "\"");
+    }
+    return values;
+  }
+  if (!node.IsMap())
+    reader.fail(node, path, "a sweep axis takes a non-empty list of values or a range {from, to, step}");
+  reader.expect_map(node, path, "a sweep range", range_keys);
+  for (const char* k : {"from", "to", "step"}) reader.require(node, path, k, "the sweep range", range_keys);
+  const auto number = [&](const char* key) {
+    const YAML::Node& v = node[key];
+    try {
+      const double x = v.as<double>();
+      if (!std::isfinite(x)) throw YAML::Exception(v.Mark(), "not finite");
+      return x;
+    } catch (const YAML::Exception&) {
+      reader.fail(v, child(path, key), "'" + std::string(key) + "' must be a finite number");
+    }
+  };
+  const double from = number("from"), to = number("to"), step = number("step");
+  if (!(step > 0.0) || to < from)
+    reader.fail(node, path, "a sweep range needs step > 0 and to >= from");
+  const double count = std::floor((to - from) / step + 1e-9) + 1.0;
+  if (count > 10000) reader.fail(node, path, "a sweep range may hold at most 10000 values");
+  for (int k = 0; k < static_cast<int>(count); ++k) {
+    char buf[64];
+    const double x = from + k * step;
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+    values.emplace_back(buf, end);
+  }
+  return values;
+}
+
+std::vector<SweepAxis> read_sweep(const Reader& reader, const YAML::Node& sweep, std::size_t stacks) {
+  const Path path = {"sweep"};
+  if (!sweep.IsMap())
+    reader.fail(sweep, path, "'sweep' must map parameter paths (stacks.<index or *>.corrector.params.NAME) to values");
+  std::vector<SweepAxis> axes;
+  for (const auto& entry : sweep) {
+    const std::string key = entry.first.Scalar();
+    SweepAxis axis;
+    axis.path = parse_override(key + "=x").path;
+    axis.location = reader.where(entry.first, child(path, key));
+    const auto& p = axis.path;
+    bool index_ok = p.size() >= 3 && p[0] == "stacks";
+    if (index_ok && p[1] != "*") {
+      std::size_t i = 0;
+      auto [end, ec] = std::from_chars(p[1].data(), p[1].data() + p[1].size(), i);
+      index_ok = ec == std::errc() && end == p[1].data() + p[1].size() && i < stacks;
+    }
+    if (!index_ok)
+      reader.fail(entry.first, child(path, key),
+                  "sweep key '" + key + "' must be stacks.<index below " + std::to_string(stacks) +
+                      " or *>.<path>, e.g. stacks.0.corrector.params.delta");
+    axis.values = sweep_values(reader, entry.second, child(path, key));
+    axes.push_back(std::move(axis));
+  }
+  return axes;
+}
+
 }  // namespace
 
 StackConfig load_stack(const fs::path& file, const std::vector<Override>& overrides) {
@@ -298,7 +375,11 @@ ExperimentConfig load_experiment(const fs::path& file, const std::vector<Overrid
         {"sketch_json", &OutputsConfig::sketch_json},
         {"stroke_csv", &OutputsConfig::stroke_csv},
         {"ply", &OutputsConfig::ply},
-        {"obj", &OutputsConfig::obj}};
+        {"obj", &OutputsConfig::obj},
+        {"mlp", &OutputsConfig::mlp},
+        {"pictures", &OutputsConfig::pictures},
+        {"report", &OutputsConfig::report},
+        {"timestamp", &OutputsConfig::timestamp}};
     for (const auto& [key, field] : flags) {
       if (outputs[key]) config.outputs.*field = reader.read_bool(outputs[key], child(path, key));
     }
@@ -335,6 +416,16 @@ ExperimentConfig load_experiment(const fs::path& file, const std::vector<Overrid
   config.recordings.erase(std::unique(config.recordings.begin(), config.recordings.end()),
                           config.recordings.end());
 
+  if (const YAML::Node sweep = root["sweep"]; sweep && !sweep.IsNull())
+    config.sweep = read_sweep(reader, sweep, config.stacks.size());
+  config.overrides = overrides;
+
+  YAML::Node resolved = YAML::Clone(root);
+  resolved["recordings"] = YAML::Node(YAML::NodeType::Sequence);
+  for (const auto& r : config.recordings) resolved["recordings"].push_back(r.string());
+  YAML::Emitter out;
+  out << resolved;
+  config.resolved_yaml = std::string(out.c_str()) + "\n";
   return config;
 }
 

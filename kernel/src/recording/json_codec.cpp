@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "sketchlab/constraint.hpp"
 #include "sketchlab/stroke.hpp"
 
 namespace sketchlab::json_codec {
@@ -134,9 +135,9 @@ ojson mat4_json(const Mat4& m) {
   return rows;
 }
 
-constexpr std::array<const char*, 11> type_names{
+constexpr std::array<const char*, 12> type_names{
     "stroke",    "undo",       "redo",      "delete_near",  "delete_stroke", "mode",
-    "workspace", "correction", "add_patch", "delete_patch", "reference"};
+    "workspace", "correction", "add_patch", "delete_patch", "reference",     "relation"};
 
 std::string allowed_types() {
   std::string s;
@@ -334,6 +335,11 @@ ojson to_json(const Event& e) {
           j["stroke"] = p.stroke;
           j["track"] = p.track;
           j["curve"] = to_json(p.curve);
+        } else if constexpr (std::is_same_v<T, RelationEvent>) {
+          j["track"] = p.track;
+          j["kind"] = std::string(to_string(p.kind));
+          j["strokes"] = p.strokes;
+          j["parameters"] = p.parameters;
         }
       },
       e.payload);
@@ -385,6 +391,25 @@ Event event_from_json(const json& j) {
     r.track = string(field(j, "track", what), "track");
     if (r.track.empty()) fail("field 'track' must not be empty");
     r.curve = curve_from_json(field(j, "curve", what), "curve");
+    e.payload = std::move(r);
+  } else if (type == "relation") {
+    check_object(j, what, {"t", "type", "track", "kind", "strokes", "parameters"});
+    RelationEvent r;
+    r.track = string(field(j, "track", what), "track");
+    if (r.track.empty()) fail("field 'track' must not be empty");
+    const std::string kind = string(field(j, "kind", what), "kind");
+    try {
+      r.kind = constraint_kind_from_string(kind);
+    } catch (const std::exception& ex) {
+      fail("field 'kind': " + std::string(ex.what()));
+    }
+    const json& strokes = array(field(j, "strokes", what), "strokes");
+    if (strokes.empty()) fail("field 'strokes' must name at least one stroke");
+    for (std::size_t i = 0; i < strokes.size(); ++i)
+      r.strokes.push_back(unsigned_integer(strokes[i], "strokes[" + std::to_string(i) + "]"));
+    const json& params = array(field(j, "parameters", what), "parameters");
+    for (std::size_t i = 0; i < params.size(); ++i)
+      r.parameters.push_back(number(params[i], "parameters[" + std::to_string(i) + "]", max_coordinate));
     e.payload = std::move(r);
   } else {
     fail("unknown event type '" + type + "' (allowed: " + allowed_types() + ")");

@@ -217,6 +217,7 @@ StepReport Session::handle(const Event& event) {
             commit(std::move(entry));
           },
           [&](const ReferenceEvent& e) { references_[e.track][e.stroke] = e.curve; },
+          [&](const RelationEvent& e) { relations_[e.track].push_back(e); },
       },
       event.payload);
   return report;

@@ -149,7 +149,7 @@ TEST_CASE("an unknown key names file, line and the allowed keys", "[config]") {
   const fs::path top = s.write("top.yaml", "recordings: [recs/a.jsonl]\nstack: []\n");
   CHECK(error_of([&] { load_experiment(top); }) ==
         top.string() + ":2: unknown key 'stack' in an experiment (allowed: experiment, "
-                       "recordings, stacks, outputs)");
+                       "recordings, stacks, outputs, sweep)");
 
   const fs::path plugin = s.write("stack.yaml", "corrector: {plugin: x, parms: {}}\n");
   CHECK(error_of([&] { load_stack(plugin); }) ==
@@ -291,7 +291,7 @@ TEST_CASE("a bad override is an error naming the override", "[config]") {
         "command line: 'outputs.ply' must be a boolean, not 'sometimes' (allowed: true, false)");
   CHECK(error_of([&] { load_experiment(file, {parse_override("outputs.colour=red")}); }) ==
         "command line: unknown key 'colour' in the outputs (allowed: dir, sketch_json, stroke_csv, "
-        "ply, obj)");
+        "ply, obj, mlp, pictures, report, timestamp)");
 }
 
 TEST_CASE("recordings from an override are relative to the working directory", "[config]") {

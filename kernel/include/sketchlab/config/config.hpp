@@ -62,6 +62,20 @@ struct OutputsConfig {
   bool stroke_csv = true;
   bool ply = false;
   bool obj = false;
+  bool mlp = false;       // MeshLab project per recording (all stacks' layers)
+  bool pictures = false;  // offscreen renders, side by side (needs the viewer and X)
+  bool report = false;    // report.html, metrics.csv, metrics.json
+  bool timestamp = true;  // run folder <dir>/<experiment>-<UTC timestamp>; false: <dir>/<experiment>
+};
+
+// One sweep axis: a parameter path inside a stack (`stacks.<index or *>....`)
+// and the values it takes (as YAML text). An experiment's cases are every
+// recording x every stack x the cartesian product of the axes that apply to
+// that stack.
+struct SweepAxis {
+  std::vector<std::string> path;
+  std::vector<std::string> values;
+  SourceLocation location;
 };
 
 struct ExperimentConfig {
@@ -70,7 +84,28 @@ struct ExperimentConfig {
   std::vector<std::filesystem::path> recordings;  // globs expanded, sorted, absolute
   std::vector<StackConfig> stacks;
   OutputsConfig outputs;
+  std::vector<SweepAxis> sweep;
+  std::vector<struct Override> overrides;  // as given to load_experiment
+  // The experiment after overrides, recordings as absolute paths: loading it
+  // again gives the same experiment (written into each run folder).
+  std::string resolved_yaml;
 };
+
+// A stack as YAML (name, input, corrector, surfacer with their parameters),
+// loadable with load_stack: the resolved configuration of one case.
+std::string stack_to_yaml(const StackConfig& stack);
+
+// One stack of an experiment at one sweep point.
+struct SweepCase {
+  StackConfig stack;  // name suffixed with the point, e.g. "cassie@delta=0.01"
+  std::vector<std::pair<std::string, std::string>> point;  // dotted path -> value
+};
+
+// The stack variants of an experiment: each stack once when no sweep axis
+// applies to it, else once per point of the cartesian product of its axes (in
+// axis order, last axis fastest). Each variant is validated like a config
+// (errors name the sweep entry's file:line).
+std::vector<SweepCase> expand_sweep(const ExperimentConfig& config);
 
 // "a.b.0.c=value" -> applied to the tree. Throws ConfigError on a malformed
 // override (no '=' or empty key).

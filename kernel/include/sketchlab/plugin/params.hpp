@@ -61,6 +61,13 @@ ParamValue validate_param(const ParamSpec& spec, const ParamValue& value);
 Params validate_params(const std::vector<ParamSpec>& specs,
                        const std::map<std::string, ParamValue>& given);
 
+// Converts text given on a command line ("k=v") to the spec's type and
+// validates it: boolean "true"/"false" (also 1/0, yes/no, on/off), integer
+// (decimal, whole text), real (decimal or exponent form, whole text), string
+// and choice as given. Throws ParamError naming the parameter and the
+// allowed values when the text does not parse or the value is out of range.
+ParamValue parse_param_value(const ParamSpec& spec, const std::string& text);
+
 struct ParamError : std::runtime_error {
   ParamError(std::string parameter_name, const std::string& message)
       : std::runtime_error(message), parameter(std::move(parameter_name)) {}

@@ -27,6 +27,10 @@
 //   add_patch     "point":[x,y,z]
 //   delete_patch  "point":[x,y,z]
 //   reference     "stroke":uint,"track":string,"curve":CURVE
+//   relation      "track":string,"kind":constraint kind name (constraint.hpp),
+//                 "strokes":[uint,...] (at least 1),"parameters":[t,...]
+//                 (curve parameters on the strokes' reference curves; may be
+//                 empty)
 // WORKSPACE = {"up":[x,y,z],"grid_enabled":bool,"grid_spacing":s>0,
 //              "grid_origin":[x,y,z],"mirror_enabled":bool,
 //              "mirror_normal":[x,y,z],"mirror_offset":d,"scale":s>0}

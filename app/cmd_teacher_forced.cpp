@@ -1,0 +1,91 @@
+// `sketchlab teacher-forced RECORDING --corrector NAME [--param k=v ...]
+// [--track cassie] [--csv out.csv]`: corrects every stroke of a recording on
+// the sketch rebuilt from a reference track and compares with the reference.
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+
+#include "commands.hpp"
+#include "sketchlab/io/text_file.hpp"
+#include "sketchlab/plugin/plugin_host.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+#include "sketchlab/run/teacher_forced.hpp"
+
+namespace sketchlab::cli {
+namespace {
+
+struct TeacherForcedCliOptions {
+  std::string recording;
+  std::string corrector;
+  std::vector<std::string> params;
+  std::string track = "cassie";
+  std::string csv;
+  double snap_tolerance = 1e-4;
+};
+
+// "k=v": true/false -> bool, integer -> int64, number -> double, else string.
+std::pair<std::string, ParamValue> parse_param(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw std::invalid_argument("--param expects key=value, got '" + text + "'");
+  const std::string key = text.substr(0, eq), v = text.substr(eq + 1);
+  if (v == "true") return {key, true};
+  if (v == "false") return {key, false};
+  char* end = nullptr;
+  const long long i = std::strtoll(v.c_str(), &end, 10);
+  if (!v.empty() && *end == '\0') return {key, static_cast<std::int64_t>(i)};
+  const double d = std::strtod(v.c_str(), &end);
+  if (!v.empty() && *end == '\0') return {key, d};
+  return {key, v};
+}
+
+void print_distribution(const std::string& name, const Distribution& d, double unit, const char* u) {
+  std::cout << name << "_median " << d.median * unit << " " << u << "\n"
+            << name << "_p90 " << d.p90 * unit << " " << u << "\n"
+            << name << "_max " << d.max * unit << " " << u << "\n";
+}
+
+}  // namespace
+
+void add_teacher_forced_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "teacher-forced",
+      "Correct each stroke of a recording on the sketch rebuilt from a reference track and compare "
+      "with the reference curve (endpoint distance, deviation, endpoint snaps)");
+  auto o = std::make_shared<TeacherForcedCliOptions>();
+  cmd->add_option("recording", o->recording, "Recording (.jsonl) with a reference track")->required();
+  cmd->add_option("--corrector", o->corrector, "Corrector plugin name")->required();
+  cmd->add_option("--param", o->params, "Corrector parameter key=value (repeatable)");
+  cmd->add_option("--track", o->track, "Reference track (default cassie)");
+  cmd->add_option("--csv", o->csv, "Write one row per stroke to this CSV file");
+  cmd->add_option("--snap-tolerance", o->snap_tolerance,
+                  "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
+  cmd->callback([o, &exit_code] {
+    std::map<std::string, ParamValue> params;
+    for (const auto& p : o->params) params.insert(parse_param(p));
+    PluginHost host;
+    host.load_directories(PluginHost::default_search_paths());
+    for (const auto& e : host.errors())
+      std::cerr << "warning: plugin " << e.path.string() << " not loaded: " << e.reason << "\n";
+    const auto corrector = host.make_corrector(o->corrector, params);
+    const Recording rec = read_recording(o->recording);
+    TeacherForcedOptions opt;
+    opt.track = o->track;
+    opt.snap_tolerance = o->snap_tolerance;
+    const auto strokes = teacher_forced(rec, *corrector, opt);
+    if (!o->csv.empty()) write_text_file(o->csv, teacher_forced_csv(strokes));
+    const TeacherForcedSummary s = summarize(strokes);
+    std::cout << "strokes " << s.strokes << "\ncompared " << s.compared << "\nerrors " << s.errors << "\n";
+    print_distribution("endpoint_distance", s.endpoint_distance, 1000.0, "mm");
+    print_distribution("mean_deviation", s.mean_deviation, 1000.0, "mm");
+    print_distribution("max_deviation", s.max_deviation, 1000.0, "mm");
+    std::cout << "snap_agreement " << 100.0 * s.snap_agreement() << " %\n"
+              << "reference_snaps " << s.reference_snaps << " of " << s.endpoints << " endpoints\n"
+              << "output_snaps " << s.output_snaps << "\nboth_snaps " << s.both_snaps << "\n"
+              << "kind_agreement " << (s.compared ? 100.0 * s.line_agreements / s.compared : 0.0) << " %\n";
+    print_distribution("latency", s.latency_ms, 1.0, "ms");
+    exit_code = 0;
+  });
+}
+
+}  // namespace sketchlab::cli

@@ -1,0 +1,163 @@
+// Soapfilm surfacer benchmark (built from plugins/surfacers/soapfilm as
+// soapfilm_bench). Sketches of 100 and 2,000 curves made of 5x5 curve grids
+// ("tiles") on a wavy surface, every cycle already a patch. Measures the time
+// to mesh one patch (p50, p95) and the whole upkeep per edit (adding a curve
+// across one tile: searches, crossed patches, meshing), which should not
+// depend on the sketch size. Prints "name value unit" lines.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include "patch_upkeep.hpp"
+#include "soapfilm_surfacer.hpp"
+
+namespace {
+
+using namespace sketchlab;
+using clock_type = std::chrono::steady_clock;
+
+double height(double x, double y) { return 0.03 * std::sin(6.0 * x) * std::cos(5.0 * y); }
+
+// A curve along x (dir 0) or y (dir 1) at the given offset, K cubic pieces
+// whose parameter is linear in the running coordinate.
+Curve grid_curve(int dir, double offset, double from, double to, int K) {
+  Curve c;
+  for (int i = 0; i <= 3 * K; ++i) {
+    const double s = from + (to - from) * i / (3.0 * K);
+    const double x = dir == 0 ? s : offset, y = dir == 0 ? offset : s;
+    c.control_points.emplace_back(x, y, height(x, y));
+  }
+  c.sharp.assign(static_cast<std::size_t>(K + 1), false);
+  return c;
+}
+
+struct Tile {
+  double x0, y0;
+};
+constexpr int lines = 5;
+constexpr double size = 0.4, step = size / (lines - 1);
+
+// Curves and nodes of one tile (ids from the counters of `edit`-to-be).
+void add_tile(Edit& e, const Tile& tile, CurveId& next_curve, NodeId& next_node) {
+  std::vector<CurveId> xs, ys;
+  for (int dir = 0; dir < 2; ++dir)
+    for (int i = 0; i < lines; ++i) {
+      NetworkCurve nc;
+      nc.id = next_curve++;
+      const double off = (dir == 0 ? tile.y0 : tile.x0) + i * step;
+      const double from = dir == 0 ? tile.x0 : tile.y0;
+      nc.curve = grid_curve(dir, off, from, from + size, lines - 1);
+      nc.keypoints = default_keypoints(nc.curve);
+      (dir == 0 ? xs : ys).push_back(nc.id);
+      e.curves_added.push_back(std::move(nc));
+    }
+  for (int i = 0; i < lines; ++i)
+    for (int j = 0; j < lines; ++j) {
+      Node n;
+      n.id = next_node++;
+      const double x = tile.x0 + j * step, y = tile.y0 + i * step;
+      n.position = Vec3(x, y, height(x, y));
+      n.incidences = {{xs[static_cast<std::size_t>(i)], static_cast<double>(j)},
+                      {ys[static_cast<std::size_t>(j)], static_cast<double>(i)}};
+      e.nodes_added.push_back(n);
+    }
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(q * (v.size() - 1) + 0.5)))];
+}
+
+void run(int curves, const soapfilm::SoapfilmParams& params) {
+  const int tiles = curves / (2 * lines);
+  const int per_row = static_cast<int>(std::ceil(std::sqrt(tiles)));
+  Sketch sketch;
+  Edit e;
+  CurveId nc = 1;
+  NodeId nn = 1;
+  std::vector<Tile> placed;
+  for (int t = 0; t < tiles; ++t) {
+    placed.push_back({(t % per_row) * (size + 0.2), (t / per_row) * (size + 0.2)});
+    add_tile(e, placed.back(), nc, nn);
+  }
+  sketch.network.apply(e);
+  // Every cycle is a patch (boundaries only: the upkeep reads boundaries).
+  Edit patches;
+  PatchId pid = 1;
+  for (auto& cycle : soapfilm::detect_all_cycles(sketch.network, params.search)) {
+    Patch p;
+    p.id = pid++;
+    p.boundary = std::move(cycle);
+    patches.patches_added.push_back(std::move(p));
+  }
+  const std::size_t patch_count = patches.patches_added.size();
+  sketch.network.apply(patches);
+
+  // Time per patch: mesh the patches of the first tiles.
+  std::vector<double> per_patch;
+  for (const auto& [id, p] : sketch.network.patches()) {
+    if (per_patch.size() >= 64) break;
+    const auto t0 = clock_type::now();
+    auto made = soapfilm::make_patch(sketch.network, id, p.boundary, true, params);
+    per_patch.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    if (!made) std::cerr << "mesh failed for patch " << id << "\n";
+  }
+
+  // Upkeep per edit: a y-curve through the middle of a tile's first column
+  // of cells, crossing the 5 x-curves (splits 4 patches into 8).
+  std::vector<double> upkeep, search, walk;
+  const int edits = std::min(tiles, 20);
+  for (int k = 0; k < edits; ++k) {
+    const Tile& tile = placed[static_cast<std::size_t>(k * tiles / edits)];
+    Edit add;
+    NetworkCurve c;
+    c.id = sketch.network.next_curve_id();
+    const double x = tile.x0 + 0.5 * step;
+    c.curve = grid_curve(1, x, tile.y0, tile.y0 + size, lines - 1);
+    c.keypoints = default_keypoints(c.curve);
+    add.curves_added.push_back(c);
+    NodeId id = sketch.network.next_node_id();
+    // The x-curves of this tile: ids in order of creation.
+    const CurveId first = 1 + static_cast<CurveId>(k * tiles / edits) * 2 * lines;
+    for (int i = 0; i < lines; ++i) {
+      Node n;
+      n.id = id++;
+      const double y = tile.y0 + i * step;
+      n.position = Vec3(x, y, height(x, y));
+      n.incidences = {{c.id, static_cast<double>(i)}, {first + static_cast<CurveId>(i), 0.5}};
+      add.nodes_added.push_back(n);
+    }
+    const Edit undo = sketch.network.apply(add);
+    const auto t0 = clock_type::now();
+    const SurfaceUpdate up = soapfilm::soapfilm_update(sketch, add, params);
+    upkeep.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    search.push_back(up.stats.at("search_ms"));
+    walk.push_back(up.stats.at("walk_ms"));
+    if (k == 0)
+      std::cout << "soapfilm." << curves << ".edit_patches_added " << up.edit.patches_added.size()
+                << " patches\nsoapfilm." << curves << ".edit_patches_removed "
+                << up.edit.patches_removed.size() << " patches\n";
+    sketch.network.apply(undo);
+  }
+  const std::string p = "soapfilm." + std::to_string(curves);
+  std::cout << p << ".curves " << sketch.network.curves().size() << " curves\n"
+            << p << ".patches " << patch_count << " patches\n"
+            << p << ".mesh_per_patch_p50 " << percentile(per_patch, 0.5) << " ms\n"
+            << p << ".mesh_per_patch_p95 " << percentile(per_patch, 0.95) << " ms\n"
+            << p << ".upkeep_per_edit_p50 " << percentile(upkeep, 0.5) << " ms\n"
+            << p << ".upkeep_per_edit_p95 " << percentile(upkeep, 0.95) << " ms\n"
+            << p << ".search_per_edit_p50 " << percentile(search, 0.5) << " ms\n"
+            << p << ".walks_per_edit_p50 " << percentile(walk, 0.5) << " ms\n";
+}
+
+}  // namespace
+
+int main() {
+  const soapfilm::SoapfilmParams params;
+  run(100, params);
+  run(2000, params);
+  return 0;
+}

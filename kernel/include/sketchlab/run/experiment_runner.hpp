@@ -1,0 +1,66 @@
+#pragma once
+// Runs an experiment: every (recording, stack, sweep point) is an independent
+// case, run in parallel; outputs are deterministic (same config, same bytes,
+// timings aside).
+//
+// Run folder <outputs.dir>/<experiment>[-<UTC timestamp>]/ holds:
+//   config.yaml                   the resolved experiment (run it again to repeat)
+//   <recording>/<stack>/          per case: case.yaml (the resolved stack),
+//                                 sketch.json, strokes.csv,
+//                                 curves.ply, raw_strokes.ply, nodes.ply,
+//                                 patches.ply, sketch.obj (as enabled)
+//   <recording>/<recording>.mlp   MeshLab project with every layer of every stack
+//   <recording>/side_by_side.png  composite picture (when a renderer is given)
+//   metrics.csv, metrics.json, report.html
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sketchlab/config/config.hpp"
+#include "sketchlab/run/metrics.hpp"
+#include "sketchlab/run/stack.hpp"
+
+namespace sketchlab {
+
+struct CaseResult {
+  std::filesystem::path recording;
+  SweepCase variant;
+  std::filesystem::path dir;  // the case's output folder
+  bool ok = false;
+  std::string error;  // why the case failed
+  CaseMetrics metrics;
+  std::vector<double> stroke_latency_ms;  // per corrected stroke, in order
+  double wall_ms = 0.0;
+};
+
+struct Progress {
+  std::size_t done = 0, total = 0;
+  std::string current;  // label of a case just started or finished
+  double elapsed_s = 0.0;
+};
+
+// A picture of several sketches side by side, same camera: (title, sketch).
+using Renderer = std::function<void(const std::filesystem::path& png,
+                                    const std::vector<std::pair<std::string, const Sketch*>>& panels)>;
+
+struct RunOptions {
+  int jobs = 0;         // worker threads; 0 = hardware concurrency
+  bool timings = true;  // false: latencies written as 0 (byte-identical reruns)
+  std::function<void(const Progress&)> progress;  // called from worker threads, serialised
+  Renderer renderer;    // used when outputs.pictures is set; may be empty
+};
+
+struct RunSummary {
+  std::filesystem::path run_dir;
+  std::vector<CaseResult> cases;  // recordings x variants, in config order
+  double wall_s = 0.0;
+  std::size_t failed() const;
+};
+
+// Throws ConfigError for sweep errors before any case runs; case failures
+// (plugin errors, bad recordings) are reported in their CaseResult.
+RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host,
+                          const RunOptions& options);
+
+}  // namespace sketchlab

@@ -1,0 +1,56 @@
+#pragma once
+// Summary metrics of one replayed case (DESIGN.md "Experiments").
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sketchlab/run/stack.hpp"
+
+namespace sketchlab {
+
+struct MetricsOptions {
+  // Endpoint snap test for the reference comparison, and relation detection
+  // for ground truth: a relation holds in the output when its measure is
+  // below these tolerances.
+  double distance_tolerance = 1e-3;           // m
+  double angle_tolerance = 0.5 * 3.14159265358979 / 180.0;  // rad
+  double length_tolerance = 0.01;             // relative, equal lengths
+  int resample = 32;                          // points per curve for deviations
+};
+
+struct PrecisionRecall {
+  std::size_t intended = 0, detected = 0, matched = 0;
+  double precision() const { return detected ? double(matched) / detected : 1.0; }
+  double recall() const { return intended ? double(matched) / intended : 1.0; }
+};
+
+// All metrics of a case, by name, plus relation precision/recall by kind.
+// Names (absent when not applicable):
+//   latency_p50_ms, latency_p95_ms, latency_max_ms (corrected strokes)
+//   strokes, curves, nodes, patches, events_refused
+//   dangling_endpoint_ratio: curve ends not at a node over all network nodes
+//     (nodes + dangling ends), CASSIE CHI 2021 §6.4.2
+//   input_deviation_mean_m, input_deviation_max_m: distance of each live 3D
+//     stroke's samples to its curve
+//   enforced_<kind>_residual_mean: mean residual of enforced constraints
+//   ref_<track>_endpoint_mean_m, ref_<track>_control_mean_m,
+//   ref_<track>_snap_agreement, ref_<track>_compared: against a reference
+//     track (matching by source stroke)
+//   gt_distance_mean_m, gt_distance_max_m: output curves vs the intended
+//     ("ground_truth" track) curves
+//   gt_<kind>_precision, gt_<kind>_recall: relations of the track's
+//     RelationEvents against those measured on the output over all pairs of
+//     live strokes (touching within distance_tolerance: coincident_point when
+//     at both curves' ends, else intersection; parallel, equal_length among
+//     straight curves; perpendicular among touching straight curves; planar
+//     for single non-straight curves). Parallel and equal_length are compared
+//     as equivalence classes. Precision is absent when nothing was detected.
+struct CaseMetrics {
+  std::map<std::string, double> values;
+  std::map<std::string, PrecisionRecall> relations;  // by constraint kind name
+};
+
+CaseMetrics compute_metrics(const ReplayResult& result, const MetricsOptions& options = {});
+
+}  // namespace sketchlab

@@ -1,0 +1,67 @@
+#pragma once
+// Teacher-forced comparison of a corrector with a reference track (e.g.
+// CASSIE's own neatened curves in imported sessions), generic over
+// correctors.
+//
+// For each stroke of a recording the sketch is rebuilt from the reference
+// curves alive at that moment (strokes created strictly earlier and not yet
+// deleted, with nodes where a reference curve's joints lie on earlier curves),
+// the workspace of the WorkspaceEvents so far and the stroke's zoom; the
+// corrector corrects the raw stroke on that sketch, and its curve is compared
+// with the reference curve of the same stroke. Errors therefore never
+// accumulate: every stroke starts from the reference history.
+// Undo/redo/patch events are not replayed (imported CASSIE sessions have none).
+#include <array>
+#include <string>
+#include <vector>
+
+#include "sketchlab/plugin/corrector.hpp"
+#include "sketchlab/recording/recording.hpp"
+#include "sketchlab/run/distribution.hpp"
+
+namespace sketchlab {
+
+struct TeacherForcedOptions {
+  std::string track = "cassie";
+  // An endpoint "snapped" when it lies within this distance (m) of another
+  // alive curve, a node, a grid point (grid on) or the mirror plane (mirror
+  // on). The same test is applied to reference and corrected curves.
+  double snap_tolerance = 1e-4;
+  int resample = 32;  // points per curve for the deviation (by arclength), >= 2
+};
+
+struct TeacherForcedStroke {
+  StrokeId stroke = 0;
+  double time = 0.0;
+  bool compared = false;   // both curves exist
+  std::string error;       // corrector error or missing curve/reference
+  bool reference_line = false, output_line = false;
+  double endpoint_distance = 0.0;  // m, worse of the two ends (best orientation)
+  double mean_deviation = 0.0;     // m, mean distance of arclength-resampled points
+  double max_deviation = 0.0;      // m, max of the same
+  // Snap of each end: "" (free), "curve", "node", "grid" or "mirror".
+  std::array<std::string, 2> reference_snap, output_snap;
+  int constraints_considered = 0, constraints_enforced = 0;
+  CorrectionStats stats;
+  double latency_ms = 0.0;
+};
+
+// Throws std::invalid_argument for resample < 2 or a negative tolerance.
+std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corrector& corrector,
+                                                const TeacherForcedOptions& options = {});
+
+struct TeacherForcedSummary {
+  std::size_t strokes = 0, compared = 0, errors = 0;
+  Distribution endpoint_distance, mean_deviation, max_deviation, latency_ms;
+  std::size_t endpoints = 0;         // 2 per compared stroke
+  std::size_t snap_agreements = 0;   // snapped in both or in neither
+  std::size_t reference_snaps = 0, output_snaps = 0, both_snaps = 0;
+  std::size_t line_agreements = 0;   // same kind (line / poly-Bézier)
+  double snap_agreement() const { return endpoints ? double(snap_agreements) / endpoints : 0.0; }
+};
+TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes);
+
+// One CSV row per stroke, with a header line.
+std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes);
+
+}  // namespace sketchlab

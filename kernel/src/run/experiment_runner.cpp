@@ -1,0 +1,201 @@
+#include "sketchlab/run/experiment_runner.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <ctime>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include "sketchlab/io/mesh_export.hpp"
+#include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/io/stroke_csv.hpp"
+#include "sketchlab/io/text_file.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+#include "sketchlab/run/report.hpp"
+
+namespace sketchlab {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string utc_timestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
+  return buf;
+}
+
+// Stack names become folder names: keep them readable but safe.
+std::string folder_name(const std::string& name) {
+  std::string out = name;
+  for (char& c : out)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && std::string("._-@=,+").find(c) == std::string::npos)
+      c = '_';
+  return out;
+}
+
+std::vector<Vec3> positions_of(const Stroke& s) {
+  std::vector<Vec3> p;
+  for (const auto& sample : s.samples) p.push_back(sample.position);
+  return p;
+}
+
+void write_case_outputs(const OutputsConfig& out, const ReplayResult& r, bool timings, const fs::path& dir) {
+  const Sketch& sketch = r.session.sketch();
+  if (out.sketch_json) write_text_file(dir / "sketch.json", sketch_to_json(sketch, &r.steps));
+  if (out.stroke_csv) write_text_file(dir / "strokes.csv", steps_to_csv(r.steps, timings));
+  if (out.obj) write_text_file(dir / "sketch.obj", network_to_obj(sketch.network));
+  if (out.ply || out.mlp) {
+    std::vector<std::vector<Vec3>> raw;
+    for (StrokeId s : live_strokes(sketch))
+      if (!sketch.strokes.at(s).samples_are_pixels) raw.push_back(positions_of(sketch.strokes.at(s)));
+    std::vector<Vec3> nodes;
+    for (const auto& [id, n] : sketch.network.nodes()) nodes.push_back(n.position);
+    std::vector<const Mesh*> patches;
+    for (const auto& [id, p] : sketch.network.patches()) patches.push_back(&p.mesh);
+    write_text_file(dir / "curves.ply", polylines_to_ply(curve_polylines(sketch.network)));
+    write_text_file(dir / "raw_strokes.ply", polylines_to_ply(raw));
+    write_text_file(dir / "nodes.ply", points_to_ply(nodes));
+    write_text_file(dir / "patches.ply", meshes_to_ply(patches));
+  }
+}
+
+// The layers MeshLab can open (empty PLY files make it complain).
+void write_meshlab_project(const fs::path& recording_dir, const std::vector<const CaseResult*>& cases) {
+  std::vector<MeshLabLayer> layers;
+  for (const CaseResult* c : cases) {
+    if (!c->ok) continue;
+    const std::string stack = c->dir.filename().string();
+    const auto& v = c->metrics.values;
+    const auto count = [&](const char* k) { auto it = v.find(k); return it == v.end() ? 0.0 : it->second; };
+    if (count("strokes") > 0) layers.push_back({stack + " raw strokes", stack + "/raw_strokes.ply"});
+    if (count("curves") > 0) layers.push_back({stack + " curves", stack + "/curves.ply"});
+    if (count("nodes") > 0) layers.push_back({stack + " nodes", stack + "/nodes.ply"});
+    if (count("patches") > 0) layers.push_back({stack + " patches", stack + "/patches.ply"});
+  }
+  write_text_file(recording_dir / (recording_dir.filename().string() + ".mlp"), meshlab_project(layers));
+}
+
+void render_recording(const Renderer& renderer, const fs::path& recording,
+                      const fs::path& recording_dir, const std::vector<const CaseResult*>& cases) {
+  const Recording rec = read_recording(recording);
+  std::vector<Sketch> sketches;
+  std::vector<std::string> titles;
+  for (const CaseResult* c : cases) {
+    if (!c->ok) continue;
+    Sketch s = read_sketch_json(c->dir / "sketch.json");
+    std::set<StrokeId> live;
+    for (const auto& [id, curve] : s.network.curves()) live.insert(curve.source_stroke);
+    for (const auto& e : rec.events)
+      if (auto* se = std::get_if<StrokeEvent>(&e.payload); se && live.count(se->stroke.id))
+        s.strokes.emplace(se->stroke.id, se->stroke);
+    sketches.push_back(std::move(s));
+    titles.push_back(c->variant.stack.name);
+  }
+  std::vector<std::pair<std::string, const Sketch*>> panels;
+  for (std::size_t i = 0; i < sketches.size(); ++i) panels.emplace_back(titles[i], &sketches[i]);
+  if (!panels.empty()) renderer(recording_dir / "side_by_side.png", panels);
+}
+
+}  // namespace
+
+std::size_t RunSummary::failed() const {
+  return static_cast<std::size_t>(std::count_if(cases.begin(), cases.end(), [](const CaseResult& c) { return !c.ok; }));
+}
+
+RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host, const RunOptions& options) {
+  const auto start = Clock::now();
+  const std::vector<SweepCase> variants = expand_sweep(config);
+
+  RunSummary summary;
+  summary.run_dir = config.outputs.dir /
+                    (config.outputs.timestamp ? config.name + "-" + utc_timestamp() : config.name);
+  fs::create_directories(summary.run_dir);
+  write_text_file(summary.run_dir / "config.yaml", config.resolved_yaml);
+
+  for (const auto& rec : config.recordings)
+    for (const auto& v : variants) {
+      CaseResult c;
+      c.recording = rec;
+      c.variant = v;
+      c.dir = summary.run_dir / rec.stem() / folder_name(v.stack.name);
+      summary.cases.push_back(std::move(c));
+    }
+
+  std::mutex progress_mutex;
+  std::size_t done = 0;
+  auto report = [&](const std::string& label, bool finished) {
+    if (!options.progress) return;
+    std::lock_guard lock(progress_mutex);
+    done += finished;
+    options.progress({done, summary.cases.size(), label, seconds_since(start)});
+  };
+
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < summary.cases.size(); i = next++) {
+      CaseResult& c = summary.cases[i];
+      const std::string label = c.recording.stem().string() + " x " + c.variant.stack.name;
+      report(label, false);
+      const auto t0 = Clock::now();
+      try {
+        const StackInstance stack = instantiate_stack(c.variant.stack, host);
+        auto input = instantiate_input(c.variant.stack, host, c.recording);
+        const ReplayResult r = replay(*input, stack);
+        write_case_outputs(config.outputs, r, options.timings, c.dir);
+        std::string header = "# recording: " + c.recording.string() + "\n";
+        for (const auto& [path, value] : c.variant.point) header += "# sweep: " + path + " = " + value + "\n";
+        write_text_file(c.dir / "case.yaml", header + stack_to_yaml(c.variant.stack));
+        c.metrics = compute_metrics(r);
+        for (const auto& s : r.steps)
+          if (s.event == "stroke" && s.corrected && s.error.empty())
+            c.stroke_latency_ms.push_back(options.timings ? s.latency_ms : 0.0);
+        if (!options.timings)
+          for (auto& [k, v] : c.metrics.values)
+            if (k.rfind("latency_", 0) == 0) v = 0.0;
+        c.ok = true;
+      } catch (const std::exception& e) {
+        c.error = e.what();
+      }
+      c.wall_ms = options.timings ? seconds_since(t0) * 1000.0 : 0.0;
+      report(label, true);
+    }
+  };
+  const int jobs = std::max(1, options.jobs > 0 ? options.jobs
+                                                : static_cast<int>(std::thread::hardware_concurrency()));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < std::min<int>(jobs, static_cast<int>(summary.cases.size())); ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+
+  for (const auto& rec : config.recordings) {
+    std::vector<const CaseResult*> cases;
+    for (const auto& c : summary.cases)
+      if (c.recording == rec) cases.push_back(&c);
+    const fs::path dir = summary.run_dir / rec.stem();
+    fs::create_directories(dir);
+    if (config.outputs.mlp) write_meshlab_project(dir, cases);
+    if (config.outputs.pictures && options.renderer && config.outputs.sketch_json) {
+      try {
+        render_recording(options.renderer, rec, dir, cases);
+      } catch (const std::exception& e) {
+        // A missing display must not lose the numbers: note it and go on.
+        write_text_file(dir / "side_by_side.error.txt", std::string(e.what()) + "\n");
+      }
+    }
+  }
+  summary.wall_s = options.timings ? seconds_since(start) : 0.0;
+  if (config.outputs.report) write_report(summary, config);
+  return summary;
+}
+
+}  // namespace sketchlab

@@ -1,0 +1,316 @@
+#include "sketchlab/run/metrics.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+
+#include "sketchlab/geometry/arclength.hpp"
+#include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/geometry/bounding_box.hpp"
+#include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/run/distribution.hpp"
+
+namespace sketchlab {
+namespace {
+
+const Curve* first_curve(const Network& net, const Sketch& sketch, StrokeId stroke) {
+  const auto ids = curves_of_stroke(sketch, stroke);
+  return ids.empty() ? nullptr : &net.find_curve(ids.front())->curve;
+}
+
+bool is_straight(const Curve& c) {
+  if (c.kind == CurveKind::line) return true;
+  const double len = arclength(c);
+  return len > 0 && (c.control_points.back() - c.control_points.front()).norm() > 0.999 * len;
+}
+
+Vec3 chord(const Curve& c) { return c.control_points.back() - c.control_points.front(); }
+
+// Mean distance of arclength-resampled points, in the better orientation.
+double resampled_deviation(const Curve& a, const Curve& b, int n) {
+  const auto pa = sample_by_arclength(a, n), pb = sample_by_arclength(b, n);
+  double fwd = 0, bwd = 0;
+  for (int i = 0; i < n; ++i) {
+    fwd += (pa[i] - pb[i]).norm();
+    bwd += (pa[i] - pb[n - 1 - i]).norm();
+  }
+  return std::min(fwd, bwd) / n;
+}
+
+double endpoint_deviation(const Curve& a, const Curve& b) {
+  const Vec3 a0 = a.control_points.front(), a1 = a.control_points.back();
+  const Vec3 b0 = b.control_points.front(), b1 = b.control_points.back();
+  return std::min((a0 - b0).norm() + (a1 - b1).norm(), (a0 - b1).norm() + (a1 - b0).norm()) / 2;
+}
+
+// Smallest distance between two curves, and where it is on each.
+struct Touch {
+  double distance;
+  double ta, tb;
+};
+Touch touch(const Curve& a, const Curve& b) {
+  const auto pa = sample_with_spacing(a, 0.005);
+  const ClosestPoint onb = closest_point_to_polyline(b, pa);
+  const ClosestPoint ona = closest_point(a, onb.point);
+  return {ona.distance, ona.t, onb.t};
+}
+
+bool at_end(const Curve& c, double t) {
+  return c.closed ? false : (t < 1e-6 || t > c.t_max() - 1e-6);
+}
+
+double plane_error(const Curve& c, int n) {
+  const auto pts = sample_by_arclength(c, n);
+  Vec3 mean = Vec3::Zero();
+  for (const auto& p : pts) mean += p;
+  mean /= n;
+  Mat3 cov = Mat3::Zero();
+  for (const auto& p : pts) cov += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Mat3> eig(cov);
+  const Vec3 normal = eig.eigenvectors().col(0);
+  double err = 0;
+  for (const auto& p : pts) err = std::max(err, std::abs(normal.dot(p - mean)));
+  return err;
+}
+
+void latency_metrics(const ReplayResult& r, CaseMetrics& m) {
+  std::vector<double> latency;
+  int refused = 0;
+  for (const auto& s : r.steps) {
+    refused += !s.error.empty();
+    if (s.event == "stroke" && s.corrected && s.error.empty()) latency.push_back(s.latency_ms);
+  }
+  m.values["events_refused"] = refused;
+  if (latency.empty()) return;
+  const Distribution d = distribution(std::move(latency));
+  m.values["latency_p50_ms"] = d.median;
+  m.values["latency_p95_ms"] = d.p95;
+  m.values["latency_max_ms"] = d.max;
+}
+
+void network_metrics(const Sketch& sketch, CaseMetrics& m) {
+  const Network& net = sketch.network;
+  m.values["strokes"] = static_cast<double>(live_strokes(sketch).size());
+  m.values["curves"] = static_cast<double>(net.curves().size());
+  m.values["nodes"] = static_cast<double>(net.nodes().size());
+  m.values["patches"] = static_cast<double>(net.patches().size());
+
+  // Dangling endpoints: open curve ends with no node incidence there.
+  std::map<CurveId, std::vector<double>> node_params;
+  for (const auto& [id, n] : net.nodes())
+    for (const auto& i : n.incidences) node_params[i.curve].push_back(i.t);
+  std::size_t dangling = 0;
+  for (const auto& [id, c] : net.curves()) {
+    if (c.curve.closed) continue;
+    for (double end : {0.0, c.curve.t_max()}) {
+      const auto& ts = node_params[id];
+      dangling += std::none_of(ts.begin(), ts.end(), [&](double t) { return std::abs(t - end) < 1e-6; });
+    }
+  }
+  const std::size_t total = dangling + net.nodes().size();
+  if (total) m.values["dangling_endpoint_ratio"] = double(dangling) / double(total);
+}
+
+void input_deviation(const Sketch& sketch, CaseMetrics& m) {
+  double sum = 0, max = 0;
+  std::size_t count = 0;
+  for (StrokeId s : live_strokes(sketch)) {
+    const Stroke& stroke = sketch.strokes.at(s);
+    if (stroke.samples_are_pixels) continue;
+    const auto ids = curves_of_stroke(sketch, s);
+    if (ids.empty()) continue;
+    for (const auto& sample : stroke.samples) {
+      double d = std::numeric_limits<double>::infinity();
+      for (CurveId id : ids)
+        d = std::min(d, closest_point(sketch.network.find_curve(id)->curve, sample.position).distance);
+      sum += d;
+      max = std::max(max, d);
+      ++count;
+    }
+  }
+  if (!count) return;
+  m.values["input_deviation_mean_m"] = sum / double(count);
+  m.values["input_deviation_max_m"] = max;
+}
+
+void enforced_residuals(const ReplayResult& r, CaseMetrics& m) {
+  std::map<std::string, std::pair<double, int>> acc;
+  for (const auto& s : r.steps)
+    for (const auto& c : s.constraints)
+      if (c.enforced) {
+        auto& a = acc[std::string(to_string(c.kind))];
+        a.first += c.residual;
+        ++a.second;
+      }
+  for (const auto& [kind, a] : acc) m.values["enforced_" + kind + "_residual_mean"] = a.first / a.second;
+}
+
+// A curve end "snaps" when another curve of the same set passes within tol.
+bool end_snapped(const Network& net, CurveId self_stroke_curve, StrokeId self, const Vec3& p, double tol) {
+  for (const auto& hit : net.curves_near(p, tol))
+    if (hit.curve != self_stroke_curve && net.find_curve(hit.curve)->source_stroke != self) return true;
+  return false;
+}
+
+void reference_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMetrics& m) {
+  const Sketch& sketch = r.session.sketch();
+  for (const auto& [track, curves] : r.session.references()) {
+    if (track == "ground_truth") continue;
+    // The reference curves of the strokes alive in the output, as a network
+    // so that snap tests use the same spatial queries on both sides.
+    Network ref;
+    Edit add;
+    std::map<StrokeId, CurveId> ref_id;
+    for (StrokeId s : live_strokes(sketch)) {
+      auto it = curves.find(s);
+      if (it == curves.end()) continue;
+      NetworkCurve nc;
+      nc.id = ref.next_curve_id() + add.curves_added.size();
+      nc.curve = it->second;
+      nc.source_stroke = s;
+      ref_id[s] = nc.id;
+      add.curves_added.push_back(std::move(nc));
+    }
+    ref.apply(add);
+    double endpoint = 0, control = 0;
+    std::size_t compared = 0, agree = 0;
+    for (const auto& [s, rid] : ref_id) {
+      const auto ids = curves_of_stroke(sketch, s);
+      if (ids.empty()) continue;
+      const Curve& ours = sketch.network.find_curve(ids.front())->curve;
+      const Curve& theirs = ref.find_curve(rid)->curve;
+      endpoint += endpoint_deviation(ours, theirs);
+      control += resampled_deviation(ours, theirs, o.resample);
+      ++compared;
+      const bool flip = (ours.control_points.front() - theirs.control_points.front()).norm() >
+                        (ours.control_points.front() - theirs.control_points.back()).norm();
+      for (int e = 0; e < 2; ++e) {
+        const Vec3& po = e ? ours.control_points.back() : ours.control_points.front();
+        const Vec3& pr = (e != flip) ? theirs.control_points.back() : theirs.control_points.front();
+        agree += end_snapped(sketch.network, ids.front(), s, po, o.distance_tolerance) ==
+                 end_snapped(ref, rid, s, pr, o.distance_tolerance);
+      }
+    }
+    if (!compared) continue;
+    const std::string p = "ref_" + track + "_";
+    m.values[p + "compared"] = double(compared);
+    m.values[p + "endpoint_mean_m"] = endpoint / double(compared);
+    m.values[p + "control_mean_m"] = control / double(compared);
+    m.values[p + "snap_agreement"] = double(agree) / double(2 * compared);
+  }
+}
+
+void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMetrics& m) {
+  const Sketch& sketch = r.session.sketch();
+  const Network& net = sketch.network;
+  const auto refs = r.session.references().find("ground_truth");
+  if (refs == r.session.references().end()) return;
+
+  double sum = 0, max = 0;
+  std::size_t count = 0;
+  std::vector<StrokeId> strokes;
+  for (StrokeId s : live_strokes(sketch)) {
+    const Curve* ours = first_curve(net, sketch, s);
+    auto gt = refs->second.find(s);
+    if (!ours || gt == refs->second.end()) continue;
+    strokes.push_back(s);
+    for (const Vec3& p : sample_by_arclength(*ours, o.resample)) {
+      const double d = closest_point(gt->second, p).distance;
+      sum += d;
+      max = std::max(max, d);
+      ++count;
+    }
+  }
+  if (count) {
+    m.values["gt_distance_mean_m"] = sum / double(count);
+    m.values["gt_distance_max_m"] = max;
+  }
+
+  // Relations: intended ones from the track, detected ones measured on the
+  // output over every pair (or single stroke for planarity).
+  using Key = std::pair<StrokeId, StrokeId>;
+  std::map<std::string, std::set<Key>> intended, detected;
+  const std::set<StrokeId> alive(strokes.begin(), strokes.end());
+  auto rel = r.session.relations().find("ground_truth");
+  if (rel != r.session.relations().end())
+    for (const auto& e : rel->second) {
+      if (e.strokes.empty() || !std::all_of(e.strokes.begin(), e.strokes.end(),
+                                            [&](StrokeId s) { return alive.count(s); }))
+        continue;
+      const StrokeId a = e.strokes.front(), b = e.strokes.size() > 1 ? e.strokes[1] : a;
+      intended[std::string(to_string(e.kind))].insert({std::min(a, b), std::max(a, b)});
+    }
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    const Curve& a = *first_curve(net, sketch, strokes[i]);
+    if (!is_straight(a) && plane_error(a, o.resample) < o.distance_tolerance)
+      detected["planar"].insert({strokes[i], strokes[i]});
+    for (std::size_t j = i + 1; j < strokes.size(); ++j) {
+      const Curve& b = *first_curve(net, sketch, strokes[j]);
+      const Key key{strokes[i], strokes[j]};
+      const Box3 ba = bounding_box(a), bb = bounding_box(b);
+      bool touching = false;
+      if (ba.exteriorDistance(bb) <= o.distance_tolerance) {
+        const Touch t = touch(a, b);
+        touching = t.distance <= o.distance_tolerance;
+        if (touching)
+          detected[at_end(a, t.ta) && at_end(b, t.tb) ? "coincident_point" : "intersection"].insert(key);
+      }
+      if (is_straight(a) && is_straight(b)) {
+        const double la = chord(a).norm(), lb = chord(b).norm();
+        const double cosang = std::clamp(std::abs(chord(a).dot(chord(b))) / (la * lb), 0.0, 1.0);
+        const double angle = std::acos(cosang);
+        if (angle < o.angle_tolerance) detected["parallel"].insert(key);
+        if (touching && std::abs(angle - std::acos(0.0)) < o.angle_tolerance)
+          detected["perpendicular"].insert(key);
+        if (std::abs(la - lb) < o.length_tolerance * std::max(la, lb)) detected["equal_length"].insert(key);
+      }
+    }
+  }
+  // Parallelism and equal length are equivalence relations: ground truth may
+  // list a spanning set (each line to the first of its class); compare the
+  // closures.
+  for (const char* kind : {"parallel", "equal_length"}) {
+    auto it = intended.find(kind);
+    if (it == intended.end()) continue;
+    std::map<StrokeId, StrokeId> parent;
+    const std::function<StrokeId(StrokeId)> find = [&](StrokeId x) {
+      auto p = parent.try_emplace(x, x).first;
+      return p->second == x ? x : p->second = find(p->second);
+    };
+    for (const auto& [a, b] : it->second) parent[find(a)] = find(b);
+    std::map<StrokeId, std::vector<StrokeId>> classes;
+    for (const auto& [x, p] : parent) classes[find(x)].push_back(x);
+    for (const auto& [root, members] : classes)
+      for (std::size_t i = 0; i < members.size(); ++i)
+        for (std::size_t j = i + 1; j < members.size(); ++j)
+          it->second.insert({std::min(members[i], members[j]), std::max(members[i], members[j])});
+  }
+  for (const auto& [kind, want] : intended) {
+    PrecisionRecall pr;
+    const auto& got = detected[kind];
+    pr.intended = want.size();
+    pr.detected = got.size();
+    for (const auto& k : got) pr.matched += want.count(k);
+    m.relations[kind] = pr;
+    if (pr.detected) m.values["gt_" + kind + "_precision"] = pr.precision();
+    m.values["gt_" + kind + "_recall"] = pr.recall();
+  }
+}
+
+}  // namespace
+
+CaseMetrics compute_metrics(const ReplayResult& result, const MetricsOptions& options) {
+  CaseMetrics m;
+  const Sketch& sketch = result.session.sketch();
+  latency_metrics(result, m);
+  network_metrics(sketch, m);
+  input_deviation(sketch, m);
+  enforced_residuals(result, m);
+  reference_metrics(result, options, m);
+  ground_truth_metrics(result, options, m);
+  return m;
+}
+
+}  // namespace sketchlab

@@ -1,0 +1,92 @@
+#include "on_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sketchlab::cassie {
+namespace {
+
+// Closest point on triangle abc (Ericson, Real-Time Collision Detection 5.1.5).
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double den = va + vb + vc;
+  if (!(std::abs(den) > 0)) return a;
+  return a + ab * (vb / den) + ac * (vc / den);
+}
+
+}  // namespace
+
+std::optional<MeshPoint> closest_on_mesh(const Mesh& mesh, const Vec3& p) {
+  std::optional<MeshPoint> best;
+  const int nv = static_cast<int>(mesh.vertices.size());
+  for (const auto& f : mesh.faces) {
+    if (f[0] < 0 || f[1] < 0 || f[2] < 0 || f[0] >= nv || f[1] >= nv || f[2] >= nv) continue;
+    const Vec3 &a = mesh.vertices[f[0]], &b = mesh.vertices[f[1]], &c = mesh.vertices[f[2]];
+    const Vec3 q = closest_on_triangle(p, a, b, c);
+    const double d = (q - p).norm();
+    if (!best || d < best->distance) {
+      const Vec3 n = (b - a).cross(c - a);
+      best = MeshPoint{q, n.norm() > 0 ? Vec3(n.normalized()) : Vec3::UnitZ(), d};
+    }
+  }
+  return best;
+}
+
+std::optional<SurfaceProjection> project_on_surface(const Network& network,
+                                                    const std::vector<Vec3>& points,
+                                                    const Vec3& t0, const Vec3& t1,
+                                                    const std::vector<CurveId>& boundary_hits,
+                                                    double max_distance, double angle) {
+  if (points.empty()) return std::nullopt;
+  Box3 stroke_box;
+  for (const Vec3& p : points) stroke_box.extend(p);
+  for (const auto& [id, patch] : network.patches()) {
+    if (patch.mesh.faces.empty()) continue;
+    Box3 box;
+    for (const Vec3& v : patch.mesh.vertices) box.extend(v);
+    box.min().array() -= max_distance;
+    box.max().array() += max_distance;
+    if (!box.contains(stroke_box)) continue;
+    // Non-breaking: at most one place on the boundary cycle.
+    std::set<CurveId> boundary;
+    for (const OrientedSegment& s : patch.boundary) boundary.insert(s.curve);
+    int on_boundary = 0;
+    for (CurveId c : boundary_hits) on_boundary += boundary.count(c) > 0;
+    if (on_boundary >= 2) continue;
+    SurfaceProjection proj{id, {}};
+    bool ok = true;
+    for (const Vec3& p : points) {
+      const auto mp = closest_on_mesh(patch.mesh, p);
+      if (!mp || mp->distance > max_distance) {
+        ok = false;
+        break;
+      }
+      proj.control_points.push_back(mp->point);
+    }
+    if (!ok) continue;
+    // Alignment: end tangents not within θ of the normal at the nearest point.
+    const auto m0 = closest_on_mesh(patch.mesh, points.front());
+    const auto m1 = closest_on_mesh(patch.mesh, points.back());
+    if (std::abs(t0.dot(m0->normal)) >= std::cos(angle) || std::abs(t1.dot(m1->normal)) >= std::cos(angle))
+      continue;
+    return proj;
+  }
+  return std::nullopt;
+}
+
+}  // namespace sketchlab::cassie

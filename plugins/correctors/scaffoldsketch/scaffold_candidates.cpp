@@ -1,0 +1,204 @@
+#include "scaffold_candidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sketchlab/geometry/bezier.hpp"
+
+namespace sketchlab::scaffoldsketch {
+namespace {
+
+constexpr double min_length = 1e-12;  // m: below this l has no direction
+
+Vec3 line_point(LinePoint at, const Vec3& a, const Vec3& b) {
+  switch (at) {
+    case LinePoint::start: return a;
+    case LinePoint::end: return b;
+    case LinePoint::middle: return 0.5 * (a + b);
+  }
+  return a;
+}
+
+// d(line point)/d(a, b) as the two 3x3 blocks' scalar factors.
+std::pair<double, double> line_point_factors(LinePoint at) {
+  switch (at) {
+    case LinePoint::start: return {1.0, 0.0};
+    case LinePoint::end: return {0.0, 1.0};
+    case LinePoint::middle: return {0.5, 0.5};
+  }
+  return {1.0, 0.0};
+}
+
+Mat3 cross_matrix(const Vec3& v) {
+  Mat3 m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+}  // namespace
+
+bool is_scaffold_line(const NetworkCurve& curve) {
+  return curve.layer == Layer::scaffold && curve.curve.kind == CurveKind::line &&
+         curve.curve.control_points.size() == 4;
+}
+
+int term_residual(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& r,
+                  Eigen::Matrix<double, 3, 6>& jacobian) {
+  jacobian.setZero();
+  r.setZero();
+  const Vec3 v = b - a;
+  const double length = v.norm();
+  switch (term.kind) {
+    case TermKind::point_point: {  // eq. 1: r = l_i - p
+      const auto [fa, fb] = line_point_factors(term.at);
+      r = line_point(term.at, a, b) - term.p;
+      jacobian.block<3, 3>(0, 0) = fa * Mat3::Identity();
+      jacobian.block<3, 3>(0, 3) = fb * Mat3::Identity();
+      return 3;
+    }
+    case TermKind::point_line: {  // eq. 2: r = (k_a - k_b) x (k_a - l_i) / |k_a - k_b|
+      const Vec3 e = term.ka - term.kb;
+      const double n = e.norm();
+      const auto [fa, fb] = line_point_factors(term.at);
+      if (n < min_length) {  // degenerate k: fall back to the point distance
+        r = line_point(term.at, a, b) - term.ka;
+        jacobian.block<3, 3>(0, 0) = fa * Mat3::Identity();
+        jacobian.block<3, 3>(0, 3) = fb * Mat3::Identity();
+        return 3;
+      }
+      r = e.cross(term.ka - line_point(term.at, a, b)) / n;
+      const Mat3 dr = -cross_matrix(e) / n;  // d r / d l_i
+      jacobian.block<3, 3>(0, 0) = fa * dr;
+      jacobian.block<3, 3>(0, 3) = fb * dr;
+      return 3;
+    }
+    case TermKind::perpendicular:
+    case TermKind::parallel: {
+      if (length < min_length) {
+        r.x() = 1.0;
+        return 1;
+      }
+      const Vec3 u = v / length;
+      const double c = u.dot(term.d);
+      // d(u·d)/db = dᵀ(I - u uᵀ)/|v|, and the negative for a.
+      const Vec3 g = (term.d - c * u) / length;
+      if (term.kind == TermKind::perpendicular) {  // eq. 3: r = u·d
+        r.x() = c;
+        jacobian.block<1, 3>(0, 0) = -g.transpose();
+        jacobian.block<1, 3>(0, 3) = g.transpose();
+      } else {
+        // Parallel as |u x d| = sin θ (same zero set and inclusion angle as
+        // eq. 4's (1 - |u·d|)², whose θ⁴ well is too flat to tell a
+        // satisfied constraint from a compromise; see README).
+        r = u.cross(term.d);
+        const Mat3 p = (Mat3::Identity() - u * u.transpose()) / length;
+        const Mat3 dr = -cross_matrix(term.d) * p;  // d(u x d)/db
+        jacobian.block<3, 3>(0, 0) = -dr;
+        jacobian.block<3, 3>(0, 3) = dr;
+        return 3;
+      }
+      return 1;
+    }
+    case TermKind::equal_length: {  // eq. 5: r = |l_a - l_b| / |k_a - k_b| - 1
+      const double k = std::max((term.ka - term.kb).norm(), min_length);
+      r.x() = length / k - 1.0;
+      if (length >= min_length) {
+        const Vec3 u = v / length;
+        jacobian.block<1, 3>(0, 0) = -u.transpose() / k;
+        jacobian.block<1, 3>(0, 3) = u.transpose() / k;
+      }
+      return 1;
+    }
+  }
+  return 0;
+}
+
+double term_energy(const ScaffoldTerm& term, const Vec3& a, const Vec3& b) {
+  Vec3 r;
+  Eigen::Matrix<double, 3, 6> j;
+  term_residual(term, a, b, r, j);
+  return r.squaredNorm();
+}
+
+std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, const Network& network,
+                                              const Workspace& workspace,
+                                              const ScaffoldParams& params, double scale) {
+  std::vector<ScaffoldTerm> terms;
+  const double radius = scaled_threshold(params.point_distance, scale);
+  const double radius2 = radius * radius;
+
+  // Point terms (eq. 1, 2), per point of l.
+  std::vector<LinePoint> points{LinePoint::start, LinePoint::end};
+  if (params.midpoint_snapping) points.push_back(LinePoint::middle);
+  for (LinePoint at : points) {
+    const Vec3 x = line_point(at, a, b);
+    std::vector<Vec3> seen;
+    for (const KeypointHit& hit : network.keypoints_near(x, radius)) {
+      const NetworkCurve* c = network.find_curve(hit.curve);
+      if (!c || !is_scaffold_line(*c)) continue;
+      const bool duplicate = std::any_of(seen.begin(), seen.end(), [&](const Vec3& s) {
+        return (s - hit.position).norm() <= 1e-12;
+      });
+      if (duplicate) continue;
+      seen.push_back(hit.position);
+      ScaffoldTerm t;
+      t.kind = TermKind::point_point;
+      t.at = at;
+      t.p = hit.position;
+      t.curve = hit.curve;
+      t.curve_t = c->keypoints[static_cast<std::size_t>(hit.keypoint)].t;
+      if (term_energy(t, a, b) < radius2) terms.push_back(t);
+    }
+    if (at == LinePoint::middle) continue;  // point–line is for endpoints (§4.1)
+    std::vector<CurveHit> hits = network.curves_near(x, radius);
+    std::sort(hits.begin(), hits.end(),
+              [](const CurveHit& l, const CurveHit& r) { return l.curve < r.curve; });
+    for (const CurveHit& hit : hits) {
+      const NetworkCurve* c = network.find_curve(hit.curve);
+      if (!c || !is_scaffold_line(*c)) continue;
+      ScaffoldTerm t;
+      t.kind = TermKind::point_line;
+      t.at = at;
+      t.ka = c->curve.control_points.front();
+      t.kb = c->curve.control_points.back();
+      t.curve = hit.curve;
+      t.curve_t = hit.t;
+      if ((t.ka - t.kb).norm() < min_length) continue;
+      if (term_energy(t, a, b) < radius2) terms.push_back(t);
+    }
+  }
+
+  // Direction and length terms (eq. 3–5) against every scaffold line.
+  const double length = (b - a).norm();
+  if (length < min_length) return terms;
+  const double perpendicular_limit = std::pow(std::sin(params.angle_threshold), 2);
+  const double parallel_limit = perpendicular_limit;  // sin²(angle) for both
+  const double length_limit = params.equal_length_tolerance * params.equal_length_tolerance;
+  for (const auto& [id, c] : network.curves()) {
+    if (!is_scaffold_line(c)) continue;
+    const Vec3 ka = c.curve.control_points.front(), kb = c.curve.control_points.back();
+    const double k = (kb - ka).norm();
+    if (k < min_length) continue;
+    ScaffoldTerm t;
+    t.curve = id;
+    t.ka = ka;
+    t.kb = kb;
+    t.d = (kb - ka) / k;
+    t.kind = TermKind::perpendicular;
+    if (term_energy(t, a, b) < perpendicular_limit) terms.push_back(t);
+    t.kind = TermKind::parallel;
+    if (term_energy(t, a, b) < parallel_limit) terms.push_back(t);
+    t.kind = TermKind::equal_length;
+    if (term_energy(t, a, b) < length_limit) terms.push_back(t);
+  }
+  if (workspace.up.norm() > min_length) {
+    ScaffoldTerm t;
+    t.d = workspace.up.normalized();
+    t.curve = 0;
+    t.kind = TermKind::parallel;
+    if (params.vertical_parallel && term_energy(t, a, b) < parallel_limit) terms.push_back(t);
+  }
+  return terms;
+}
+
+}  // namespace sketchlab::scaffoldsketch

@@ -1,0 +1,124 @@
+#include "shape_stroke.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "mvc_curve.hpp"
+#include "network_nodes.hpp"
+#include "scaffold_line.hpp"
+#include "shape_keypoints.hpp"
+#include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/geometry/polyline.hpp"
+#include "sketchlab/preprocess/line_detection.hpp"
+#include "sketchlab/session.hpp"
+
+namespace sketchlab::scaffoldsketch {
+
+std::vector<Vec3> resample_every(const std::vector<Vec3>& points, double spacing) {
+  std::vector<Vec3> distinct;
+  for (const Vec3& p : points)
+    if (distinct.empty() || (p - distinct.back()).norm() > 0) distinct.push_back(p);
+  if (distinct.size() < 2) return distinct;
+  const double length = polyline_length(distinct);
+  const int n = std::max(2, static_cast<int>(std::ceil(length / spacing)) + 1);
+  return resample_polyline(distinct, n);
+}
+
+Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
+                                const ShapeParams& params, double node_tolerance,
+                                const PreprocessParams& fallback) {
+  const auto start = std::chrono::steady_clock::now();
+  Correction out;
+  auto finish = [&](double mode) {
+    out.stats.extra["mode"] = mode;
+    out.stats.extra["time_ms"] =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+    return out;
+  };
+  const double scale = stroke.workspace_scale;
+  const std::vector<Vec3> raw = positions(stroke);
+  const std::vector<Vec3> samples =
+      resample_every(raw, scaled_threshold(params.sample_spacing, scale));
+  if (samples.size() < 2) {
+    out.error = "stroke " + std::to_string(stroke.id) + " has zero length";
+    return out;
+  }
+  const Network& network = sketch.network;
+  const ShapeKeypoints keys = select_shape_keypoints(samples, network, params, scale);
+  const std::size_t m = keys.points.size();
+  out.stats.extra["keypoints"] = static_cast<double>(m);
+  if (m < 2) {
+    out.edit = freehand_edit(stroke, sketch, fallback);
+    if (!out.edit.curves_added.empty()) out.edit.curves_added.front().layer = Layer::shape;
+    return finish(mode_shape_fallback);
+  }
+
+  NetworkCurve curve;
+  curve.id = network.next_curve_id();
+  curve.layer = Layer::shape;
+  curve.source_stroke = stroke.id;
+  const PcaLine pca =
+      fit_pca_line(samples, params.straight_deviation, params.straight_length_tolerance);
+  const bool straight = pca.is_line && (keys.points.back() - keys.points.front()).norm() > 1e-12;
+  double mode = mode_shape_curve;
+  if (straight) {  // §4.2.2: exact line between the first and last keypoints
+    curve.curve = make_line(keys.points.front(), keys.points.back());
+    mode = mode_shape_line;
+    Constraint c;
+    c.kind = ConstraintKind::straight;
+    c.references = {ConstraintRef{ConstraintRef::Kind::stroke, stroke.id, 0.0}};
+    c.target = (pca.b - pca.a).normalized();
+    c.enforced = true;
+    c.residual = pca.max_deviation;
+    out.constraints.push_back(c);
+  } else {
+    const MvcResult mvc = fit_mvc_curve(keys.points, keys.tangents, keys.closed, params);
+    curve.curve = mvc.curve;
+    out.stats.iterations = mvc.rounds;
+    out.stats.extra["evaluations"] = mvc.evaluations;
+    out.stats.extra["objective"] = mvc.objective;
+    out.stats.extra["initial_objective"] = mvc.initial_objective;
+  }
+  curve.keypoints = default_keypoints(curve.curve);
+  const double n_samples = static_cast<double>(samples.size() - 1);
+  for (std::size_t j = 0; j < m; ++j) {
+    const double t = straight ? (j + 1 == m ? 1.0 : 0.0) : static_cast<double>(j);
+    const bool interior = !straight && j > 0 && j + 1 < m;
+    if (interior) curve.keypoints.push_back(Keypoint{Keypoint::Kind::other, t, keys.points[j]});
+    if (straight && j > 0 && j + 1 < m) continue;  // only the ends constrain a line
+    Constraint c;
+    c.kind = ConstraintKind::coincident_point;
+    c.references = {
+        ConstraintRef{ConstraintRef::Kind::stroke, stroke.id, keys.sample[j] / n_samples},
+        ConstraintRef{ConstraintRef::Kind::curve, keys.keypoint_curve[j], keys.keypoint_t[j]}};
+    c.target = keys.points[j];
+    c.enforced = true;
+    c.residual = (evaluate(curve.curve, t) - keys.points[j]).norm();
+    out.constraints.push_back(c);
+    if (!straight && keys.tangent_curve[j] != 0) {
+      Constraint tc;
+      tc.kind = ConstraintKind::tangent;
+      tc.references = {ConstraintRef{ConstraintRef::Kind::stroke, stroke.id, keys.sample[j] / n_samples},
+                       ConstraintRef{ConstraintRef::Kind::curve, keys.tangent_curve[j], 0.0}};
+      tc.target = keys.tangents[j];
+      tc.enforced = true;
+      const Vec3 tan = tangent(curve.curve, t);
+      tc.residual = std::acos(std::clamp(tan.dot(keys.tangents[j]), -1.0, 1.0));
+      out.constraints.push_back(tc);
+    }
+  }
+  out.edit.curves_added.push_back(curve);
+  NodeId next_node = network.next_node_id();
+  const double tolerance = scaled_threshold(node_tolerance, scale);
+  for (std::size_t j = 0; j < m; ++j) {
+    if (keys.closed && j + 1 == m) break;  // the seam is the first keypoint
+    if (straight && j > 0 && j + 1 < m) continue;
+    const double t = straight ? (j == 0 ? 0.0 : 1.0) : static_cast<double>(j);
+    connect_point(network, keys.points[j], curve.id, t, tolerance, out.edit, next_node);
+  }
+  return finish(mode);
+}
+
+}  // namespace sketchlab::scaffoldsketch

@@ -1,0 +1,39 @@
+// Synthetic sessions with ground truth: a curve network (built-in model or
+// the sharp features of a mesh) drawn stroke by stroke with modelled human
+// error, each stroke followed by its intended curve and relations. The whole
+// session is generated when the input is created (deterministic from the
+// seed), so bad parameters fail before anything runs.
+#include "session_synthesis.hpp"
+#include "sketchlab/plugin/plugin_api.hpp"
+#include "synthetic_params.hpp"
+
+namespace {
+
+using namespace sketchlab;
+
+class SyntheticInput : public Input {
+ public:
+  explicit SyntheticInput(const Params& p)
+      : recording_(synthetic::synthesize_session(synthetic::synthesis_params(p))) {}
+  RecordingHeader header() const override { return recording_.header; }
+  std::optional<Event> next() override {
+    if (finished()) return std::nullopt;
+    return recording_.events[next_++];
+  }
+  bool finished() const override { return next_ >= recording_.events.size(); }
+
+ private:
+  Recording recording_;
+  std::size_t next_ = 0;
+};
+
+PluginDescriptor describe() {
+  return input_descriptor<SyntheticInput>(
+      "synthetic", "1.0",
+      "synthetic VR or tablet sessions drawn from a ground-truth curve network, with ground truth",
+      synthetic::synthetic_param_specs());
+}
+
+}  // namespace
+
+SKETCHLAB_PLUGIN(describe)

@@ -1,0 +1,197 @@
+#include "curve_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "curve_tangent.hpp"
+#include "sketchlab/geometry/bezier.hpp"
+
+namespace sketchlab::soapfilm {
+namespace {
+
+constexpr double t_eps = 1e-9;
+
+bool same_t(const Curve& c, double a, double b) {
+  if (std::abs(a - b) <= t_eps) return true;
+  return c.closed && std::abs(std::abs(a - b) - c.t_max()) <= t_eps;
+}
+
+}  // namespace
+
+double wrap_parameter(const Curve& curve, double t) {
+  const double T = curve.t_max();
+  if (!curve.closed) return std::clamp(t, 0.0, T);
+  while (t > T) t -= T;
+  while (t < 0.0) t += T;
+  return t;
+}
+
+bool CurveGraph::is_graph_node(NodeId id) const {
+  const Node* node = network_->find_node(id);
+  if (!node || node->incidences.empty()) return false;
+  const NodeIncidence& first = node->incidences.front();
+  const NetworkCurve* nc = network_->find_curve(first.curve);
+  if (!nc) return false;
+  for (const NodeIncidence& inc : node->incidences)
+    if (inc.curve != first.curve || !same_t(nc->curve, inc.t, first.t)) return true;
+  // One curve passing through: a graph node only at an open curve's end.
+  const Curve& c = nc->curve;
+  return !c.closed && (first.t <= t_eps || first.t >= c.t_max() - t_eps);
+}
+
+const std::vector<int>& CurveGraph::segments_of(CurveId curve) {
+  if (auto it = by_curve_.find(curve); it != by_curve_.end()) return it->second;
+  std::vector<int>& out = by_curve_[curve];
+  const NetworkCurve* nc = network_->find_curve(curve);
+  if (!nc) return out;
+  const std::vector<Segment> pieces = network_->segments_of(curve);
+  if (pieces.empty()) return out;
+  const std::size_t n = pieces.size();
+  // Start at a piece beginning at a graph node (closed curves may start
+  // anywhere in the list); merge pieces across non-graph nodes.
+  std::size_t start = 0;
+  if (nc->curve.closed) {
+    while (start < n && !is_graph_node(pieces[start].node0)) ++start;
+    if (start == n) return out;  // a loop with no graph node bounds nothing
+  }
+  std::size_t i = start;
+  const std::size_t count = nc->curve.closed ? n : n - start;
+  std::size_t done = 0;
+  while (done < count) {
+    GraphSegment g{curve, pieces[i].t0, pieces[i].t1, pieces[i].node0, pieces[i].node1};
+    ++done;
+    // Open curves: pieces are contiguous only when they share a node.
+    while (done < count && !is_graph_node(g.node1)) {
+      const Segment& next = pieces[(i + 1) % n];
+      if (next.node0 != g.node1) break;
+      i = (i + 1) % n;
+      g.t1 = next.t1;
+      g.node1 = next.node1;
+      ++done;
+    }
+    i = (i + 1) % n;
+    out.push_back(static_cast<int>(segments_.size()));
+    segments_.push_back(g);
+  }
+  return out;
+}
+
+std::vector<HalfEdge> CurveGraph::outgoing(NodeId id) {
+  std::vector<HalfEdge> out;
+  const Node* node = network_->find_node(id);
+  if (!node) return out;
+  std::vector<CurveId> curves;
+  for (const NodeIncidence& inc : node->incidences) curves.push_back(inc.curve);
+  std::sort(curves.begin(), curves.end());
+  curves.erase(std::unique(curves.begin(), curves.end()), curves.end());
+  for (CurveId c : curves)
+    for (int s : segments_of(c)) {
+      const GraphSegment& g = segment(s);
+      if (g.node0 == id) out.push_back({s, true});
+      if (g.node1 == id) out.push_back({s, false});
+    }
+  return out;
+}
+
+const Curve& CurveGraph::curve_of(HalfEdge h) const {
+  return network_->find_curve(segment(h.segment).curve)->curve;
+}
+
+double CurveGraph::span(int s) const {
+  const GraphSegment& g = segment(s);
+  const Curve& c = network_->find_curve(g.curve)->curve;
+  if (g.t1 > g.t0) return g.t1 - g.t0;
+  return c.closed ? g.t1 - g.t0 + c.t_max() : 0.0;
+}
+
+Vec3 CurveGraph::direction(HalfEdge h) const {
+  const GraphSegment& g = segment(h.segment);
+  const Curve& c = curve_of(h);
+  if (h.forward) return one_sided_tangent(c, g.t0, true);
+  double t1 = g.t1;
+  if (c.closed && t1 <= 0.0) t1 = c.t_max();
+  return -one_sided_tangent(c, t1, false);
+}
+
+Vec3 CurveGraph::chord(HalfEdge h) const {
+  return network_->find_node(to(h))->position - network_->find_node(from(h))->position;
+}
+
+std::vector<double> CurveGraph::parameters(HalfEdge h, int n) const {
+  n = std::max(n, 2);
+  const GraphSegment& g = segment(h.segment);
+  const Curve& c = curve_of(h);
+  const double len = span(h.segment);
+  std::vector<double> t(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double u = static_cast<double>(h.forward ? i : n - 1 - i) / (n - 1);
+    double v = g.t0 + u * len;
+    if (c.closed && v > c.t_max()) v -= c.t_max();
+    t[static_cast<std::size_t>(i)] = std::clamp(v, 0.0, c.t_max());
+  }
+  // Exact ends (the nodes' own parameters).
+  t.front() = h.forward ? g.t0 : g.t1;
+  t.back() = h.forward ? g.t1 : g.t0;
+  return t;
+}
+
+OrientedSegment CurveGraph::oriented(HalfEdge h) const {
+  const GraphSegment& g = segment(h.segment);
+  return h.forward ? OrientedSegment{g.curve, g.t0, g.t1, g.node0, g.node1}
+                   : OrientedSegment{g.curve, g.t1, g.t0, g.node1, g.node0};
+}
+
+int CurveGraph::segment_at(CurveId curve, double t) {
+  const std::vector<int>& segs = segments_of(curve);
+  if (segs.empty()) return -1;
+  const Curve& c = network_->find_curve(curve)->curve;
+  int best = segs.front();
+  double best_d = INFINITY;
+  for (int s : segs) {
+    const GraphSegment& g = segment(s);
+    const double len = span(s);
+    double rel = t - g.t0;
+    if (c.closed && rel < 0.0) rel += c.t_max();
+    if (rel >= -t_eps && rel <= len + t_eps) return s;
+    const double d = std::min(std::abs(rel), std::abs(rel - len));
+    if (d < best_d) best_d = d, best = s;
+  }
+  return best;
+}
+
+std::vector<int> CurveGraph::covered_by(const OrientedSegment& piece) {
+  std::vector<int> out;
+  const NetworkCurve* nc = network_->find_curve(piece.curve);
+  if (!nc) return out;
+  const Curve& c = nc->curve;
+  const double T = c.t_max();
+  const std::vector<int>& segs = segments_of(piece.curve);
+  // Interval [lo, lo + len] in unwrapped parameter. On a closed curve the
+  // piece is read the way that is an exact union of graph segments (a
+  // wrapping piece and its complement share their end parameters).
+  auto collect = [&](double lo, double len) {
+    std::vector<int> hit;
+    double covered = 0.0;
+    for (int s : segs) {
+      const GraphSegment& g = segment(s);
+      double rel = g.t0 - lo;
+      if (c.closed && rel < -t_eps) rel += T;
+      const double sl = span(s);
+      if (rel >= -t_eps && rel + sl <= len + t_eps) {
+        hit.push_back(s);
+        covered += sl;
+      }
+    }
+    return std::make_pair(hit, std::abs(covered - len) <= 1e-7 * std::max(1.0, T));
+  };
+  const double a = std::min(piece.t_from, piece.t_to), b = std::max(piece.t_from, piece.t_to);
+  if (!c.closed) return collect(a, b - a).first;
+  if (a == b) return collect(a, T).first;
+  auto direct = collect(a, b - a);
+  if (direct.second && !direct.first.empty()) return direct.first;
+  auto wrapped = collect(b, a + T - b);
+  if (wrapped.second && !wrapped.first.empty()) return wrapped.first;
+  return direct.first.size() >= wrapped.first.size() ? direct.first : wrapped.first;
+}
+
+}  // namespace sketchlab::soapfilm

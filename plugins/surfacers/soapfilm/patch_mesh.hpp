@@ -1,0 +1,31 @@
+#pragma once
+// Patch geometry (CASSIE CHI'21 §5.2, thesis §3.3.4): fill a closed boundary
+// polyline with triangles, remesh isotropically with the border protected,
+// then smooth by curvature flow with the border fixed ("soap film").
+// The only file of the plugin that includes CGAL.
+#include <vector>
+
+#include "sketchlab/mesh.hpp"
+
+namespace sketchlab::soapfilm {
+
+struct PatchMeshParams {
+  int remesh_iterations = 3;   // isotropic remeshing passes (CASSIE native plugin: 3)
+  int smooth_iterations = 10;  // curvature-flow steps (CASSIE native plugin: 10)
+  // Curvature-flow time step, relative to the squared boundary diameter (the
+  // implicit step solves (M - t L) x = M x, whose mass matrix scales as
+  // length², so this keeps the result independent of the patch size).
+  double smoothing_time = 1e-3;
+};
+
+// `boundary`: the cycle as a closed polygon (n >= 3 points in order, the
+// first not repeated at the end), every edge at most `target_edge` metres
+// long (sample the boundary curves at that spacing: that is the "split long
+// border edges" step done on the curves, so border vertices stay on them).
+// Returns a triangle mesh whose border is exactly `boundary` (same points,
+// same order: vertices 0..n-1), with per-vertex normals.
+// Throws std::runtime_error when the polygon cannot be triangulated.
+Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
+                const PatchMeshParams& params);
+
+}  // namespace sketchlab::soapfilm

@@ -1,0 +1,44 @@
+#pragma once
+// Small builders for synthetic strokes and sketches.
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "sketchlab/sketch.hpp"
+
+namespace sketchlab::test {
+
+// n samples of f(u), u in [0,1], over `duration` seconds.
+inline Stroke make_stroke(StrokeId id, int n, const std::function<Vec3(double)>& f,
+                          double duration = 1.0) {
+  Stroke s;
+  s.id = id;
+  for (int i = 0; i < n; ++i) {
+    const double u = n > 1 ? double(i) / (n - 1) : 0.0;
+    Sample smp;
+    smp.position = f(u);
+    smp.time = u * duration;
+    s.samples.push_back(smp);
+  }
+  return s;
+}
+
+inline void add_curve(Sketch& sketch, const Curve& c) {
+  Edit e;
+  NetworkCurve nc;
+  nc.id = sketch.network.next_curve_id();
+  nc.curve = c;
+  nc.keypoints = default_keypoints(c);
+  e.curves_added.push_back(nc);
+  sketch.network.apply(e);
+}
+
+inline void apply(Sketch& sketch, const Edit& e) { sketch.network.apply(e); }
+
+inline bool all_finite(const Curve& c) {
+  for (const Vec3& p : c.control_points)
+    if (!p.allFinite()) return false;
+  return true;
+}
+
+}  // namespace sketchlab::test

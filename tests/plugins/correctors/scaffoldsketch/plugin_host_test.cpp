@@ -1,0 +1,70 @@
+// Loading the plugin through the real PluginHost, and replaying a CASSIE
+// session (all strokes layer auto) through it.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+#include "sketchlab/plugin/plugin_host.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+#include "sketchlab/session.hpp"
+#include "test_paths.hpp"
+
+using namespace sketchlab;
+
+TEST_CASE("the plugin loads and declares the paper's defaults", "[scaffoldsketch]") {
+  PluginHost host;
+  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+  const LoadedPlugin* p = host.find(PluginKind::corrector, "scaffoldsketch");
+  REQUIRE(p != nullptr);
+  auto spec = [&](const std::string& name) -> const ParamSpec& {
+    for (const ParamSpec& s : p->descriptor->params)
+      if (s.name == name) return s;
+    FAIL("no parameter " << name);
+    return p->descriptor->params.front();
+  };
+  CHECK(std::get<double>(spec("point_distance").default_value) == 0.05);
+  CHECK(std::get<double>(spec("angle_threshold").default_value) == Approx(10.0));
+  CHECK(std::get<double>(spec("equal_length_tolerance").default_value) == 0.25);
+  CHECK(std::get<double>(spec("point_point_weight").default_value) == 100.0);
+  CHECK(std::get<double>(spec("keypoint_distance").default_value) == 0.03);
+  CHECK(std::get<double>(spec("tangent_angle").default_value) == Approx(25.0));
+  CHECK(std::get<double>(spec("sample_spacing").default_value) == 0.01);
+  CHECK(host.make_corrector("scaffoldsketch", {}) != nullptr);
+  CHECK_THROWS_WITH(host.make_corrector("scaffoldsketch", {{"point_distance", -1.0}}),
+                    Catch::Contains("point_distance"));
+}
+
+TEST_CASE("replaying hat.jsonl through the plugin", "[scaffoldsketch][slow]") {
+  PluginHost host;
+  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+  const auto corrector = host.make_corrector("scaffoldsketch", {});
+  const Recording rec = read_recording(test::source_path("data/recordings/hat.jsonl"));
+  Session session(rec.header.workspace, corrector, nullptr);
+  int strokes = 0, lines = 0, curves = 0, ticks = 0, iterations = 0;
+  for (const Event& e : rec.events) {
+    const bool stroke = std::holds_alternative<StrokeEvent>(e.payload);
+    if (stroke) REQUIRE(std::get<StrokeEvent>(e.payload).stroke.layer == Layer::automatic);
+    const StepReport r = session.handle(e);
+    if (!stroke) continue;
+    ++strokes;
+    INFO("stroke " << *r.stroke << ": " << r.error);
+    CHECK(r.error.empty());
+    const double mode = r.stats.extra.count("mode") ? r.stats.extra.at("mode") : -1;
+    lines += mode == 0;
+    curves += mode >= 2;
+    ticks += mode == 1;
+    iterations = std::max(iterations, r.stats.iterations);
+    for (const Constraint& k : r.constraints) {
+      CHECK(std::isfinite(k.residual));
+      CHECK(std::isfinite(k.weight));
+    }
+  }
+  for (const auto& [id, c] : session.sketch().network.curves())
+    for (const Vec3& p : c.curve.control_points) REQUIRE(p.allFinite());
+  WARN("hat: " << strokes << " strokes, " << lines << " scaffold lines, " << curves
+               << " shape curves, " << ticks << " ticks, max IRLS iterations " << iterations);
+  CHECK(strokes > 0);
+  CHECK(lines + curves + ticks == strokes);  // every stroke got a mode
+  CHECK(curves > 0);
+}

@@ -1,0 +1,191 @@
+// ScaffoldSketch §4.1: candidates (eq. 1–5), IRLS (eq. 6–7), ticks.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "irls_solver.hpp"
+#include "scaffold_line.hpp"
+#include "sketchlab/geometry/bezier.hpp"
+#include "test_helpers.hpp"
+
+using namespace sketchlab;
+using namespace sketchlab::scaffoldsketch;
+using namespace sketchlab::scaffoldsketch::test;
+
+TEST_CASE("term residuals square to eq. 1-5 and have exact Jacobians", "[scaffoldsketch]") {
+  const Vec3 a(0.01, 0.02, -0.03), b(0.4, 0.33, 0.12);
+  std::vector<ScaffoldTerm> terms(7);
+  terms[0].kind = TermKind::point_point;
+  terms[0].p = Vec3(0.02, 0.0, 0.0);
+  terms[1] = terms[0];
+  terms[1].at = LinePoint::middle;
+  terms[2].kind = TermKind::point_line;
+  terms[2].at = LinePoint::end;
+  terms[2].ka = Vec3(0.3, 0.3, 0.3);
+  terms[2].kb = Vec3(0.5, 0.2, 0.1);
+  terms[3].kind = TermKind::perpendicular;
+  terms[3].d = Vec3(1, -1, 0.5).normalized();
+  terms[4] = terms[3];
+  terms[4].kind = TermKind::parallel;
+  terms[5].kind = TermKind::equal_length;
+  terms[5].ka = Vec3::Zero();
+  terms[5].kb = Vec3(0.45, 0.1, 0);
+  terms[6] = terms[4];
+  terms[6].d = -terms[4].d;
+
+  const Vec3 u = (b - a).normalized();
+  CHECK(term_energy(terms[0], a, b) == Approx((a - terms[0].p).squaredNorm()));
+  CHECK(term_energy(terms[3], a, b) == Approx(std::pow(u.dot(terms[3].d), 2)));
+  CHECK(term_energy(terms[4], a, b) == Approx(u.cross(terms[4].d).squaredNorm()));
+  CHECK(term_energy(terms[5], a, b) == Approx(std::pow((b - a).norm() / terms[5].kb.norm() - 1, 2)));
+  const Vec3 e = terms[2].ka - terms[2].kb;
+  CHECK(term_energy(terms[2], a, b) ==
+        Approx(e.cross(terms[2].ka - b).squaredNorm() / e.squaredNorm()));
+
+  for (const ScaffoldTerm& t : terms) {
+    Vec3 r;
+    Eigen::Matrix<double, 3, 6> j;
+    const int rows = term_residual(t, a, b, r, j);
+    for (int k = 0; k < 6; ++k) {
+      const double h = 1e-7;
+      Vec3 ap = a, bp = b, am = a, bm = b;
+      (k < 3 ? ap : bp)(k % 3) += h;
+      (k < 3 ? am : bm)(k % 3) -= h;
+      Vec3 rp, rm;
+      Eigen::Matrix<double, 3, 6> unused;
+      term_residual(t, ap, bp, rp, unused);
+      term_residual(t, am, bm, rm, unused);
+      for (int row = 0; row < rows; ++row)
+        CHECK(j(row, k) == Approx((rp(row) - rm(row)) / (2 * h)).margin(1e-6));
+    }
+  }
+}
+
+TEST_CASE("IRLS picks one of two conflicting point-point constraints exactly", "[scaffoldsketch]") {
+  const Vec3 p1(0, 0, 0), p2(0.04, 0, 0);
+  std::vector<ScaffoldTerm> terms(2);
+  terms[0].kind = terms[1].kind = TermKind::point_point;
+  terms[0].p = p1;
+  terms[1].p = p2;
+  const Vec3 a0(0.013, 0.008, -0.004), b0(0.1, 0.35, 0.2);
+  const IrlsResult r = solve_irls(terms, a0, b0, IrlsOptions{});
+  CHECK(r.converged);
+  CHECK(r.iterations >= 2);
+  CHECK(r.iterations <= 10);
+  CHECK((r.a - p1).norm() < 1e-9);
+  CHECK((r.a - p2).norm() > 0.039);
+  REQUIRE(r.enforced.size() == 2);
+  CHECK(r.enforced[0]);
+  CHECK_FALSE(r.enforced[1]);
+  CHECK(r.weights[0] > 1e6 * r.weights[1]);
+  CHECK((r.b - b0).norm() < 1e-12);  // nothing acts on the other end
+
+  // The nearer candidate wins when the input is closer to the other one.
+  const IrlsResult s = solve_irls(terms, Vec3(0.03, -0.01, 0.0), b0, IrlsOptions{});
+  CHECK((s.a - p2).norm() < 1e-9);
+  CHECK(s.enforced[1]);
+  CHECK_FALSE(s.enforced[0]);
+}
+
+TEST_CASE("conflicting keypoints in a sketch: exactly one satisfied, not a compromise",
+          "[scaffoldsketch]") {
+  Sketch sketch;
+  const Vec3 p1(0, 1, 0), p2(0.04, 1, 0);
+  const CurveId l1 = add_scaffold_line(sketch, p1, p1 + Vec3(0, 0, -0.5));
+  const CurveId l2 = add_scaffold_line(sketch, p2, p2 + Vec3(0, 0, -0.5));
+  const Vec3 a(0.016, 1.005, 0.004), b(0.02, 1.3, 0.01);
+  const Correction c = correct_scaffold_line(a, b, 7, sketch, ScaffoldParams{}, 1.0);
+  REQUIRE(c.error.empty());
+  REQUIRE(c.edit.curves_added.size() == 1);
+  const Curve& line = c.edit.curves_added[0].curve;
+  const Vec3 start = line.control_points.front();
+  int coincident = 0, enforced = 0;
+  for (const Constraint& k : c.constraints) {
+    CHECK(std::isfinite(k.residual));
+    CHECK(std::isfinite(k.weight));
+    if (k.kind != ConstraintKind::coincident_point || k.references[0].parameter != 0.0) continue;
+    ++coincident;
+    if (k.enforced) {
+      ++enforced;
+      CHECK(k.residual < 1e-9);
+    } else {
+      CHECK(k.residual > 0.039);
+    }
+  }
+  CHECK(coincident == 2);
+  CHECK(enforced == 1);
+  const double d1 = (start - p1).norm(), d2 = (start - p2).norm();
+  CHECK(std::min(d1, d2) < 1e-9);
+  // The line starts at a keypoint of l1 or l2, and a node joins them there.
+  REQUIRE(c.edit.nodes_added.size() == 1);
+  const Node& node = c.edit.nodes_added[0];
+  REQUIRE(node.incidences.size() == 2);
+  CHECK((node.incidences[0].curve == l1 || node.incidences[0].curve == l2));
+  CHECK(node.incidences[1].curve == c.edit.curves_added[0].id);
+  CHECK(c.stats.iterations >= 1);
+  CHECK(c.stats.extra.at("evaluations") > 0);
+}
+
+TEST_CASE("thresholds scale with zoom", "[scaffoldsketch]") {
+  Sketch sketch;
+  add_scaffold_line(sketch, Vec3(0, 1, 0), Vec3(0, 1, -0.5));
+  // 4 cm from the keypoint: a candidate at zoom 1, not at zoom 2 (2.5 cm).
+  const Vec3 a(0.04, 1, 0), b(0.04, 1.4, 0.3);
+  auto count_points = [&](double scale) {
+    const Correction c = correct_scaffold_line(a, b, 3, sketch, ScaffoldParams{}, scale);
+    int n = 0;
+    for (const Constraint& k : c.constraints)
+      n += k.kind == ConstraintKind::coincident_point || k.kind == ConstraintKind::point_on_curve;
+    return n;
+  };
+  CHECK(count_points(1.0) == 2);  // point-point to the start keypoint, point-line to the line
+  CHECK(count_points(2.0) == 0);
+}
+
+TEST_CASE("a parallel, perpendicular and equal-length line is corrected exactly", "[scaffoldsketch]") {
+  Sketch sketch;
+  add_scaffold_line(sketch, Vec3(0, 1, 0), Vec3(0.3, 1, 0));
+  // Drawn 5° off the vertical, 7 % too long, starting 1.5 cm off the corner.
+  const Vec3 a(0.3 + 0.01, 1.0 - 0.005, 0.01);
+  const Vec3 b = a + 0.321 * Vec3(std::sin(5 * degrees), std::cos(5 * degrees), 0);
+  const Correction c = correct_scaffold_line(a, b, 2, sketch, ScaffoldParams{}, 1.0);
+  REQUIRE(c.error.empty());
+  const Curve& line = c.edit.curves_added[0].curve;
+  const Vec3 s = line.control_points.front(), e = line.control_points.back();
+  CHECK((s - Vec3(0.3, 1, 0)).norm() < 1e-9);
+  CHECK((e - Vec3(0.3, 1.3, 0)).norm() < 1e-9);
+  for (const Constraint& k : c.constraints) CHECK(k.enforced);
+  CHECK(c.stats.iterations >= 1);
+  CHECK(c.stats.iterations <= 10);
+}
+
+TEST_CASE("a short scaffold stroke across a line adds a tick keypoint", "[scaffoldsketch]") {
+  Sketch sketch;
+  const CurveId id = add_scaffold_line(sketch, Vec3(0, 1, 0), Vec3(0.5, 1, 0));
+  const std::vector<Vec3> tick{Vec3(0.15, 1.01, 0.002), Vec3(0.152, 0.99, -0.002)};
+  const Correction c = correct_tick(tick, 9, sketch, ScaffoldParams{}, 1.0);
+  REQUIRE(c.error.empty());
+  CHECK(c.edit.curves_added.empty());
+  REQUIRE(c.edit.curves_replaced.size() == 1);
+  const NetworkCurve& replaced = c.edit.curves_replaced[0];
+  CHECK(replaced.id == id);
+  CHECK(replaced.curve == sketch.network.find_curve(id)->curve);
+  REQUIRE(replaced.keypoints.size() == 4);
+  const Keypoint& k = replaced.keypoints.back();
+  CHECK(k.kind == Keypoint::Kind::tick);
+  CHECK(k.position.x() == Approx(0.151).margin(1e-3));
+  CHECK(k.position.y() == Approx(1.0).margin(1e-12));
+  CHECK((evaluate(replaced.curve, k.t) - k.position).norm() < 1e-12);
+
+  // Applying it, the same tick again changes nothing.
+  sketch.network.apply(c.edit);
+  const Correction again = correct_tick(tick, 10, sketch, ScaffoldParams{}, 1.0);
+  CHECK(again.edit.empty());
+  CHECK(again.stats.extra.at("ignored") == 1);
+
+  // Far from every line: ignored, no error.
+  const std::vector<Vec3> far{Vec3(3, 3, 3), Vec3(3.01, 3, 3)};
+  const Correction none = correct_tick(far, 11, sketch, ScaffoldParams{}, 1.0);
+  CHECK(none.error.empty());
+  CHECK(none.edit.empty());
+}
