@@ -10,23 +10,14 @@
 
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/io/text_file.hpp"
-#include "test_paths.hpp"
+#include "cli_helpers.hpp"
 
 namespace fs = std::filesystem;
 using namespace sketchlab;
+using test::fresh_dir;
+using test::run_cli;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::binary_path("tests/tmp/" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-int run_cli(const std::string& args, const fs::path& log) {
-  return std::system((std::string(SKETCHLAB_CLI) + " " + args + " >" + log.string() + " 2>&1").c_str());
-}
 
 // A short recording (first events of hat) keeps these tests fast.
 const char* stacks_yaml =

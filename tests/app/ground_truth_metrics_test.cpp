@@ -7,16 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "sketchlab/io/text_file.hpp"
-#include "test_paths.hpp"
+#include "cli_helpers.hpp"
 
 namespace fs = std::filesystem;
 using namespace sketchlab;
+using test::fresh_dir;
+using test::run_cli;
 
 namespace {
-
-int run_cli(const std::string& args, const fs::path& log) {
-  return std::system((std::string(SKETCHLAB_CLI) + " " + args + " >" + log.string() + " 2>&1").c_str());
-}
 
 // Metrics of freehand on a synthetic cube drawn with the given noise scale.
 nlohmann::json cube_metrics(const fs::path& dir, double noise) {

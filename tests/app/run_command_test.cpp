@@ -8,24 +8,14 @@
 
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "test_paths.hpp"
+#include "cli_helpers.hpp"
 
 namespace fs = std::filesystem;
 using namespace sketchlab;
+using test::fresh_dir;
+using test::run_cli;
 
 namespace {
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::binary_path("tests/tmp/" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-int run_cli(const std::string& args, const fs::path& log) {
-  const std::string cmd = std::string(SKETCHLAB_CLI) + " " + args + " >" + log.string() + " 2>&1";
-  return std::system(cmd.c_str());
-}
 
 fs::path write_experiment(const fs::path& dir, const std::string& recording) {
   const fs::path file = dir / "experiment.yaml";

@@ -56,6 +56,7 @@ class Session {
   void apply_surfacer(const SurfaceUpdate& update, HistoryEntry& entry, StepReport& report);
   void apply_step(const Edit& edit, HistoryEntry& entry, StepReport& report);
   void commit(HistoryEntry entry);
+  void surfacer_command(const SurfaceCommand& command, const std::string& action, StepReport& report);
   StepReport remove_curves(const std::vector<CurveId>& curves, const std::string& action,
                            StepReport report);
 

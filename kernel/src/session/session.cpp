@@ -149,6 +149,17 @@ StepReport Session::remove_curves(const std::vector<CurveId>& curves, const std:
   return report;
 }
 
+void Session::surfacer_command(const SurfaceCommand& command, const std::string& action,
+                               StepReport& report) {
+  if (!surfacer_) {
+    report.error = action + ": this stack has no surfacer";
+    return;
+  }
+  HistoryEntry entry{action, std::nullopt, {}};
+  apply_surfacer(surfacer_->command(sketch_, command), entry, report);
+  commit(std::move(entry));
+}
+
 StepReport Session::handle(const Event& event) {
   StepReport report;
   report.event = std::string(event_type_name(event.payload));
@@ -198,24 +209,8 @@ StepReport Session::handle(const Event& event) {
               sketch_.workspace = e.workspace;
           },
           [&](const CorrectionEvent& e) { sketch_.correction_enabled = e.enabled; },
-          [&](const AddPatchEvent& e) {
-            if (!surfacer_) {
-              report.error = "add_patch: this stack has no surfacer";
-              return;
-            }
-            HistoryEntry entry{"add_patch", std::nullopt, {}};
-            apply_surfacer(surfacer_->command(sketch_, e), entry, report);
-            commit(std::move(entry));
-          },
-          [&](const DeletePatchEvent& e) {
-            if (!surfacer_) {
-              report.error = "delete_patch: this stack has no surfacer";
-              return;
-            }
-            HistoryEntry entry{"delete_patch", std::nullopt, {}};
-            apply_surfacer(surfacer_->command(sketch_, e), entry, report);
-            commit(std::move(entry));
-          },
+          [&](const AddPatchEvent& e) { surfacer_command(e, "add_patch", report); },
+          [&](const DeletePatchEvent& e) { surfacer_command(e, "delete_patch", report); },
           [&](const ReferenceEvent& e) { references_[e.track][e.stroke] = e.curve; },
           [&](const RelationEvent& e) { relations_[e.track].push_back(e); },
       },

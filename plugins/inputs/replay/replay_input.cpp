@@ -3,29 +3,25 @@
 // input is created, so a malformed recording fails before anything runs,
 // with file:line.
 #include "sketchlab/plugin/plugin_api.hpp"
+#include "sketchlab/plugin/recording_input.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 
 namespace {
 
 using namespace sketchlab;
 
-class ReplayInput : public Input {
- public:
-  explicit ReplayInput(const Params& p) : recording_(read_recording(p.string("path"))) {
-    const auto limit = p.integer("max_events");
-    if (limit >= 0 && static_cast<std::size_t>(limit) < recording_.events.size())
-      recording_.events.resize(static_cast<std::size_t>(limit));
-  }
-  RecordingHeader header() const override { return recording_.header; }
-  std::optional<Event> next() override {
-    if (finished()) return std::nullopt;
-    return recording_.events[next_++];
-  }
-  bool finished() const override { return next_ >= recording_.events.size(); }
+// The whole file is read (and checked) up front; max_events truncates it.
+Recording read_truncated(const Params& p) {
+  Recording recording = read_recording(p.string("path"));
+  const auto limit = p.integer("max_events");
+  if (limit >= 0 && static_cast<std::size_t>(limit) < recording.events.size())
+    recording.events.resize(static_cast<std::size_t>(limit));
+  return recording;
+}
 
- private:
-  Recording recording_;
-  std::size_t next_ = 0;
+class ReplayInput : public RecordingInput {
+ public:
+  explicit ReplayInput(const Params& p) : RecordingInput(read_truncated(p)) {}
 };
 
 PluginDescriptor describe() {

@@ -5,26 +5,17 @@
 // seed), so bad parameters fail before anything runs.
 #include "session_synthesis.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
+#include "sketchlab/plugin/recording_input.hpp"
 #include "synthetic_params.hpp"
 
 namespace {
 
 using namespace sketchlab;
 
-class SyntheticInput : public Input {
+class SyntheticInput : public RecordingInput {
  public:
   explicit SyntheticInput(const Params& p)
-      : recording_(synthetic::synthesize_session(synthetic::synthesis_params(p))) {}
-  RecordingHeader header() const override { return recording_.header; }
-  std::optional<Event> next() override {
-    if (finished()) return std::nullopt;
-    return recording_.events[next_++];
-  }
-  bool finished() const override { return next_ >= recording_.events.size(); }
-
- private:
-  Recording recording_;
-  std::size_t next_ = 0;
+      : RecordingInput(synthetic::synthesize_session(synthetic::synthesis_params(p))) {}
 };
 
 PluginDescriptor describe() {
