@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "plugin_arguments.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
 
@@ -33,39 +34,17 @@ struct SynthOptions {
   bool overwrite = false;
 };
 
-// "k=v" texts -> values of the types the input's specs declare. Names the
-// input does not declare are passed as strings so validation reports them
-// with the declared list.
-std::map<std::string, ParamValue> parse_params(const LoadedPlugin& plugin,
-                                               const std::vector<std::string>& texts) {
-  std::map<std::string, ParamValue> out;
-  for (const std::string& text : texts) {
-    const auto eq = text.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw std::invalid_argument("--param expects key=value, got '" + text + "'");
-    const std::string key = text.substr(0, eq), value = text.substr(eq + 1);
-    const auto& specs = plugin.descriptor->params;
-    const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == key; });
-    out[key] = spec == specs.end() ? ParamValue(value) : parse_param_value(*spec, value);
-  }
-  return out;
-}
-
 // Runs the input to its end, writing each event as it comes. Returns the
 // number of events written.
 std::size_t record(const std::string& input_name, const std::vector<std::string>& texts,
                    const std::map<std::string, ParamValue>& extra, const std::string& output,
                    bool overwrite) {
   PluginHost host;
-  host.load_directories(PluginHost::default_search_paths());
+  load_plugins(host);
   const LoadedPlugin* plugin = host.find(PluginKind::input, input_name);
-  if (!plugin) {
-    for (const auto& e : host.errors())
-      std::cerr << "warning: plugin " << e.path.string() << " not loaded: " << e.reason << "\n";
-  }
   std::map<std::string, ParamValue> params = extra;
   if (plugin)
-    for (auto& [k, v] : parse_params(*plugin, texts)) params[k] = v;
+    for (auto& [k, v] : parse_param_arguments(*plugin, texts)) params[k] = v;
   const auto input = host.make_input(input_name, params);  // throws for unknown names
   if (!overwrite && std::filesystem::exists(output))
     throw std::runtime_error(output + ": already exists; pass --overwrite to replace it");

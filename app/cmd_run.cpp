@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "default_paths.hpp"
+#include "plugin_arguments.hpp"
 #include "progress_line.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/run/experiment_runner.hpp"
@@ -76,9 +77,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
     const ExperimentConfig config = load_experiment(path, overrides);
 
     PluginHost host;
-    host.load_directories(PluginHost::default_search_paths());
-    for (const auto& e : host.errors())
-      std::cerr << "warning: plugin " << e.path.string() << " not loaded: " << e.reason << "\n";
+    load_plugins(host);
 
     ProgressLine progress(std::cerr, isatty(fileno(stderr)) != 0);
     RunOptions options;

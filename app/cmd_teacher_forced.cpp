@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "plugin_arguments.hpp"
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
@@ -24,21 +25,6 @@ struct TeacherForcedCliOptions {
 };
 
 // "k=v": true/false -> bool, integer -> int64, number -> double, else string.
-std::pair<std::string, ParamValue> parse_param(const std::string& text) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw std::invalid_argument("--param expects key=value, got '" + text + "'");
-  const std::string key = text.substr(0, eq), v = text.substr(eq + 1);
-  if (v == "true") return {key, true};
-  if (v == "false") return {key, false};
-  char* end = nullptr;
-  const long long i = std::strtoll(v.c_str(), &end, 10);
-  if (!v.empty() && *end == '\0') return {key, static_cast<std::int64_t>(i)};
-  const double d = std::strtod(v.c_str(), &end);
-  if (!v.empty() && *end == '\0') return {key, d};
-  return {key, v};
-}
-
 void print_distribution(const std::string& name, const Distribution& d, double unit, const char* u) {
   std::cout << name << "_median " << d.median * unit << " " << u << "\n"
             << name << "_p90 " << d.p90 * unit << " " << u << "\n"
@@ -62,11 +48,10 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
                   "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
   cmd->callback([o, &exit_code] {
     std::map<std::string, ParamValue> params;
-    for (const auto& p : o->params) params.insert(parse_param(p));
     PluginHost host;
-    host.load_directories(PluginHost::default_search_paths());
-    for (const auto& e : host.errors())
-      std::cerr << "warning: plugin " << e.path.string() << " not loaded: " << e.reason << "\n";
+    load_plugins(host);
+    const LoadedPlugin* plugin = host.find(PluginKind::corrector, o->corrector);
+    if (plugin) params = parse_param_arguments(*plugin, o->params);
     const auto corrector = host.make_corrector(o->corrector, params);
     const Recording rec = read_recording(o->recording);
     TeacherForcedOptions opt;
