@@ -35,6 +35,11 @@ struct Curve {
 // A straight curve from a to b (kind = line).
 Curve make_line(const Vec3& a, const Vec3& b);
 
+// Throws std::invalid_argument "<where>: curve has N control points; need
+// 3K+1 with K >= 1" unless the curve has at least one segment: the
+// precondition of every geometry function.
+void require_segments(const Curve& curve, const char* where);
+
 // Empty when the curve is well formed (3K+1 points with K >= 1, finite
 // coordinates, K+1 sharp flags, closed curves closed), else the reason.
 std::string validate(const Curve& curve);

@@ -36,4 +36,12 @@ std::string validate(const Curve& curve) {
   return {};
 }
 
+void require_segments(const Curve& curve, const char* where) {
+  if (curve.segment_count() < 1) {
+    throw std::invalid_argument(std::string(where) + ": curve has " +
+                                std::to_string(curve.control_points.size()) +
+                                " control points; need 3K+1 with K >= 1");
+  }
+}
+
 }  // namespace sketchlab

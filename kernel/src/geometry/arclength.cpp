@@ -52,14 +52,6 @@ double segment_length(const std::array<Vec3, 4>& p, double a, double b) {
   return adaptive(p, a, b, whole, tol, 0);
 }
 
-void require_curve(const Curve& curve, const char* where) {
-  if (curve.segment_count() < 1) {
-    throw std::invalid_argument(std::string(where) + ": curve has " +
-                                std::to_string(curve.control_points.size()) +
-                                " control points; need 3K+1 with K >= 1");
-  }
-}
-
 std::vector<double> cumulative_segment_lengths(const Curve& curve) {
   const int k_count = curve.segment_count();
   std::vector<double> cum(static_cast<std::size_t>(k_count) + 1, 0.0);
@@ -106,7 +98,7 @@ double parameter_at(const Curve& curve, const std::vector<double>& cum, double s
 }  // namespace
 
 double arclength(const Curve& curve, double t0, double t1) {
-  require_curve(curve, "arclength");
+  require_segments(curve, "arclength");
   if (!std::isfinite(t0) || !std::isfinite(t1)) {
     throw std::invalid_argument("arclength: parameters must be finite");
   }
@@ -128,17 +120,17 @@ double arclength(const Curve& curve, double t0, double t1) {
 }
 
 double arclength(const Curve& curve) {
-  require_curve(curve, "arclength");
+  require_segments(curve, "arclength");
   return cumulative_segment_lengths(curve).back();
 }
 
 double parameter_at_arclength(const Curve& curve, double s) {
-  require_curve(curve, "parameter_at_arclength");
+  require_segments(curve, "parameter_at_arclength");
   return parameter_at(curve, cumulative_segment_lengths(curve), s);
 }
 
 std::vector<double> arclength_parameters(const Curve& curve, int n) {
-  require_curve(curve, "arclength_parameters");
+  require_segments(curve, "arclength_parameters");
   if (n < 2) {
     throw std::invalid_argument("arclength_parameters: n = " + std::to_string(n) +
                                 "; need n >= 2");
@@ -165,7 +157,7 @@ std::vector<Vec3> sample_by_arclength(const Curve& curve, int n) {
 }
 
 std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing) {
-  require_curve(curve, "sample_with_spacing");
+  require_segments(curve, "sample_with_spacing");
   if (!(spacing > 0.0) || !std::isfinite(spacing)) {
     throw std::invalid_argument("sample_with_spacing: spacing must be finite and > 0, got " +
                                 std::to_string(spacing));

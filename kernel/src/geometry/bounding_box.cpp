@@ -46,23 +46,15 @@ void extend_segment(Box3& box, const std::array<Vec3, 4>& p, double u0, double u
   }
 }
 
-void require_curve(const Curve& curve, const char* where) {
-  if (curve.segment_count() < 1) {
-    throw std::invalid_argument(std::string(where) + ": curve has " +
-                                std::to_string(curve.control_points.size()) +
-                                " control points; need 3K+1 with K >= 1");
-  }
-}
-
 }  // namespace
 
 Box3 bounding_box(const Curve& curve) {
-  require_curve(curve, "bounding_box");
+  require_segments(curve, "bounding_box");
   return bounding_box(curve, 0.0, curve.t_max());
 }
 
 Box3 bounding_box(const Curve& curve, double t0, double t1) {
-  require_curve(curve, "bounding_box");
+  require_segments(curve, "bounding_box");
   if (!std::isfinite(t0) || !std::isfinite(t1) || t1 < t0) {
     throw std::invalid_argument("bounding_box: need finite t0 <= t1, got t0 = " +
                                 std::to_string(t0) + ", t1 = " + std::to_string(t1));

@@ -124,18 +124,10 @@ SegmentHit closest_on_segment(const std::array<Vec3, 4>& p, const Vec3& q) {
   return best;
 }
 
-void require_curve(const Curve& curve, const char* where) {
-  if (curve.segment_count() < 1) {
-    throw std::invalid_argument(std::string(where) + ": curve has " +
-                                std::to_string(curve.control_points.size()) +
-                                " control points; need 3K+1 with K >= 1");
-  }
-}
-
 }  // namespace
 
 ClosestPoint closest_point(const Curve& curve, const Vec3& p) {
-  require_curve(curve, "closest_point");
+  require_segments(curve, "closest_point");
   if (!p.allFinite()) throw std::invalid_argument("closest_point: query point is not finite");
   ClosestPoint best;
   double best_d2 = std::numeric_limits<double>::infinity();
@@ -179,7 +171,7 @@ ClosestPoint closest_point_on_polyline(const std::vector<Vec3>& polyline, const 
 }
 
 ClosestPoint closest_point_to_polyline(const Curve& curve, const std::vector<Vec3>& polyline) {
-  require_curve(curve, "closest_point_to_polyline");
+  require_segments(curve, "closest_point_to_polyline");
   if (polyline.empty()) {
     throw std::invalid_argument("closest_point_to_polyline: polyline has no points");
   }

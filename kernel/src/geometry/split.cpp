@@ -14,11 +14,7 @@ namespace {
 constexpr double kJointEps = 1e-12;
 
 void require_curve(const Curve& curve, const char* where) {
-  if (curve.segment_count() < 1) {
-    throw std::invalid_argument(std::string(where) + ": curve has " +
-                                std::to_string(curve.control_points.size()) +
-                                " control points; need 3K+1 with K >= 1");
-  }
+  require_segments(curve, where);
   if (curve.sharp.size() != static_cast<std::size_t>(curve.segment_count()) + 1) {
     throw std::invalid_argument(std::string(where) + ": curve has " +
                                 std::to_string(curve.sharp.size()) +
