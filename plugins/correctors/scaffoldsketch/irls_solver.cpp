@@ -11,8 +11,8 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 double weighted_cost(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& w,
-                     const Vec3& a, const Vec3& b) {
-  double cost = 0.0;
+                     const Vec3& a, const Vec3& b, const Vec3& a0, const Vec3& b0, double anchor) {
+  double cost = anchor * ((a - a0).squaredNorm() + (b - b0).squaredNorm());
   for (std::size_t i = 0; i < terms.size(); ++i)
     if (w[i] > 0) cost += w[i] * term_energy(terms[i], a, b);
   return cost;
@@ -28,15 +28,17 @@ std::vector<double> energies_at(const std::vector<ScaffoldTerm>& terms, const Ve
 }  // namespace
 
 int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& weights,
-                      Vec3& a, Vec3& b, int max_steps) {
+                      Vec3& a, Vec3& b, const Vec3& a0, const Vec3& b0, double anchor,
+                      int max_steps) {
   double lambda = 1e-6;
-  double cost = weighted_cost(terms, weights, a, b);
+  double cost = weighted_cost(terms, weights, a, b, a0, b0, anchor);
   int steps = 0;
   Vec3 r;
   Eigen::Matrix<double, 3, 6> j;
   while (steps < max_steps && cost > 0) {
-    Mat6 h = Mat6::Zero();
-    Vec6 g = Vec6::Zero();
+    Mat6 h = anchor * Mat6::Identity();
+    Vec6 g;
+    g << anchor * (a - a0), anchor * (b - b0);
     for (std::size_t i = 0; i < terms.size(); ++i) {
       if (weights[i] <= 0) continue;
       const int rows = term_residual(terms[i], a, b, r, j);
@@ -58,7 +60,7 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
         continue;
       }
       const Vec3 na = a + delta.head<3>(), nb = b + delta.tail<3>();
-      const double next = weighted_cost(terms, weights, na, nb);
+      const double next = weighted_cost(terms, weights, na, nb, a0, b0, anchor);
       if (next < cost) {
         a = na;
         b = nb;
@@ -102,7 +104,7 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, co
   Vec3 a = a0, b = b0;
   for (int k = 1; k <= options.max_iterations; ++k) {
     const Vec3 pa = a, pb = b;
-    result.solver_steps += minimise_weighted(terms, w, a, b);  // eq. 6
+    result.solver_steps += minimise_weighted(terms, w, a, b, a0, b0);  // eq. 6
     result.iterations = k;
     energy = energies_at(terms, a, b);
     std::vector<bool> now(n);
@@ -123,7 +125,7 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, co
   std::vector<double> polish(n);
   for (std::size_t i = 0; i < n; ++i) polish[i] = satisfied[i] ? w[i] : 0.0;
   Vec3 pa = a, pb = b;
-  result.solver_steps += minimise_weighted(terms, polish, pa, pb);
+  result.solver_steps += minimise_weighted(terms, polish, pa, pb, a0, b0);
   if (pa.allFinite() && pb.allFinite()) {
     a = pa;
     b = pb;

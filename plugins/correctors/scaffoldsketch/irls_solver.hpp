@@ -26,10 +26,14 @@ struct IrlsResult {
 };
 
 // Minimises Σ w_i C_i(l) (eq. 6) from (a, b) in place with Levenberg–
-// Marquardt on the residuals of term_residual (directions the terms do not
-// constrain stay where they are). Returns the number of steps taken.
+// Marquardt on the residuals of term_residual, plus anchor·(|a−a0|² + |b−b0|²)
+// (1/m²). Eq. 6 alone leaves directions no term constrains free (a line with
+// only direction terms may stretch without bound); the tiny anchor picks the
+// solution closest to what the user drew without moving satisfied terms
+// measurably. Returns the number of steps taken.
 int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& weights,
-                      Vec3& a, Vec3& b, int max_steps = 200);
+                      Vec3& a, Vec3& b, const Vec3& a0, const Vec3& b0, double anchor = 1e-6,
+                      int max_steps = 200);
 
 // IRLS: weights start at w0_i / (ε + C_i(l_input)) with w0 = 100 for
 // point–point and 1 otherwise (the input line is iteration 0 of eq. 7, which

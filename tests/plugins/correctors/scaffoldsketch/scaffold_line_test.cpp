@@ -189,3 +189,19 @@ TEST_CASE("a short scaffold stroke across a line adds a tick keypoint", "[scaffo
   CHECK(none.error.empty());
   CHECK(none.edit.empty());
 }
+
+TEST_CASE("direction-only terms rotate a short line without stretching it", "[scaffoldsketch]") {
+  // Regression (CASSIE chair, stroke 30): a 6 cm line with two perpendicular
+  // terms once ended 7 m long, as eq. 6 leaves the length free.
+  const Vec3 a0(0.0626, 1.1133, 0.2952), b0(0.1265, 1.1082, 0.2960);
+  std::vector<ScaffoldTerm> terms(2);
+  terms[0].kind = TermKind::perpendicular;
+  terms[0].d = Vec3(0, 0, 1);
+  terms[1].kind = TermKind::perpendicular;
+  terms[1].d = Vec3(0, 1, 0);
+  const IrlsResult r = solve_irls(terms, a0, b0, {});
+  CHECK(r.enforced[0]);
+  CHECK(r.enforced[1]);
+  CHECK((r.b - r.a).norm() == Approx((b0 - a0).norm()).epsilon(0.05));
+  CHECK(((r.a + r.b) / 2 - (a0 + b0) / 2).norm() < 0.01);
+}
