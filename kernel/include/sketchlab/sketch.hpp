@@ -27,4 +27,8 @@ std::vector<CurveId> curves_of_stroke(const Sketch& sketch, StrokeId stroke);
 // Strokes whose edits are currently applied (history order, oldest first).
 std::vector<StrokeId> live_strokes(const Sketch& sketch);
 
+// Live strokes that still have curves in the network (a stroke whose curves
+// were deleted drops out), in the same order.
+std::vector<StrokeId> strokes_with_curves(const Sketch& sketch);
+
 }  // namespace sketchlab

@@ -19,4 +19,13 @@ std::vector<StrokeId> live_strokes(const Sketch& sketch) {
   return out;
 }
 
+std::vector<StrokeId> strokes_with_curves(const Sketch& sketch) {
+  std::set<StrokeId> drawn;
+  for (const auto& [id, c] : sketch.network.curves()) drawn.insert(c.source_stroke);
+  std::vector<StrokeId> out;
+  for (StrokeId s : live_strokes(sketch))
+    if (drawn.count(s)) out.push_back(s);
+  return out;
+}
+
 }  // namespace sketchlab

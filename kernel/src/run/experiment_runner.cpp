@@ -56,7 +56,7 @@ void write_case_outputs(const OutputsConfig& out, const ReplayResult& r, bool ti
   if (out.obj) write_text_file(dir / "sketch.obj", network_to_obj(sketch.network));
   if (out.ply || out.mlp) {
     std::vector<std::vector<Vec3>> raw;
-    for (StrokeId s : live_strokes(sketch))
+    for (StrokeId s : strokes_with_curves(sketch))
       if (!sketch.strokes.at(s).samples_are_pixels) raw.push_back(positions_of(sketch.strokes.at(s)));
     std::vector<Vec3> nodes;
     for (const auto& [id, n] : sketch.network.nodes()) nodes.push_back(n.position);

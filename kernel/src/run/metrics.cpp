@@ -92,7 +92,7 @@ void latency_metrics(const ReplayResult& r, CaseMetrics& m) {
 
 void network_metrics(const Sketch& sketch, CaseMetrics& m) {
   const Network& net = sketch.network;
-  m.values["strokes"] = static_cast<double>(live_strokes(sketch).size());
+  m.values["strokes"] = static_cast<double>(strokes_with_curves(sketch).size());
   m.values["curves"] = static_cast<double>(net.curves().size());
   m.values["nodes"] = static_cast<double>(net.nodes().size());
   m.values["patches"] = static_cast<double>(net.patches().size());
@@ -116,7 +116,7 @@ void network_metrics(const Sketch& sketch, CaseMetrics& m) {
 void input_deviation(const Sketch& sketch, CaseMetrics& m) {
   double sum = 0, max = 0;
   std::size_t count = 0;
-  for (StrokeId s : live_strokes(sketch)) {
+  for (StrokeId s : strokes_with_curves(sketch)) {
     const Stroke& stroke = sketch.strokes.at(s);
     if (stroke.samples_are_pixels) continue;
     const auto ids = curves_of_stroke(sketch, s);
@@ -163,7 +163,7 @@ void reference_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMetri
     Network ref;
     Edit add;
     std::map<StrokeId, CurveId> ref_id;
-    for (StrokeId s : live_strokes(sketch)) {
+    for (StrokeId s : strokes_with_curves(sketch)) {
       auto it = curves.find(s);
       if (it == curves.end()) continue;
       NetworkCurve nc;
@@ -211,7 +211,7 @@ void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMe
   double sum = 0, max = 0;
   std::size_t count = 0;
   std::vector<StrokeId> strokes;
-  for (StrokeId s : live_strokes(sketch)) {
+  for (StrokeId s : strokes_with_curves(sketch)) {
     const Curve* ours = first_curve(net, sketch, s);
     auto gt = refs->second.find(s);
     if (!ours || gt == refs->second.end()) continue;

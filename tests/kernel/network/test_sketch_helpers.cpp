@@ -50,4 +50,10 @@ TEST_CASE("curves_of_stroke and live_strokes", "[network][sketch]") {
   sketch.history.done = {entry(5), entry(std::nullopt), entry(2), entry(5), entry(8)};
   sketch.history.undone = {entry(11)};
   CHECK(live_strokes(sketch) == std::vector<StrokeId>{5, 2, 8});
+
+  // Of the live strokes only those with curves; 7, 3 and 9 made curves but
+  // are not in the history, 5, 2 and 8 are live but made none.
+  sketch.history.done.push_back(entry(7));
+  sketch.history.done.push_back(entry(9));
+  CHECK(strokes_with_curves(sketch) == std::vector<StrokeId>{7, 9});
 }

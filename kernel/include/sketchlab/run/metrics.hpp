@@ -28,7 +28,7 @@ struct PrecisionRecall {
 // All metrics of a case, by name, plus relation precision/recall by kind.
 // Names (absent when not applicable):
 //   latency_p50_ms, latency_p95_ms, latency_max_ms (corrected strokes)
-//   strokes, curves, nodes, patches, events_refused
+//   strokes (live strokes with curves), curves, nodes, patches, events_refused
 //   dangling_endpoint_ratio: curve ends not at a node over all network nodes
 //     (nodes + dangling ends), CASSIE CHI 2021 §6.4.2
 //   input_deviation_mean_m, input_deviation_max_m: distance of each live 3D
