@@ -34,7 +34,7 @@ nlohmann::json cube_metrics(const fs::path& dir, double noise) {
 
 }  // namespace
 
-TEST_CASE("freehand on a noise-free synthetic cube is perfect; noise degrades the metrics",
+TEST_CASE("freehand on a noise-free synthetic cube is perfect, noise degrades the metrics",
           "[app][metrics]") {
   const fs::path dir = test::binary_path("tests/tmp/ground_truth");
   fs::remove_all(dir);

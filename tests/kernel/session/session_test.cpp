@@ -122,7 +122,7 @@ TEST_CASE("a failing corrector keeps the raw stroke and changes nothing", "[sess
   CHECK(s.sketch().history.done.empty());
 }
 
-TEST_CASE("correction off uses the freehand fit; deletions are undoable", "[session]") {
+TEST_CASE("correction off uses the freehand fit, deletions are undoable", "[session]") {
   std::mt19937_64 rng(11);
   auto fit = std::make_shared<FitCorrector>();
   Session s({}, fit, nullptr);

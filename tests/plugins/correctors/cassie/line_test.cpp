@@ -37,7 +37,7 @@ TEST_CASE("Appendix A: two interior constraints project the ends", "[cassie][lin
   for (const Candidate& c : cs) CHECK(closest_point(l, c.target).distance < 1e-12);
 }
 
-TEST_CASE("Appendix A: one interior constraint translates; free lines align to an axis",
+TEST_CASE("Appendix A: one interior constraint translates, free lines align to an axis",
           "[cassie][line]") {
   const Vec3 a(0, 0, 0), b(1, 0.1, 0);
   const std::vector<Candidate> one{at(0.5, {0.5, 0.08, 0.01})};

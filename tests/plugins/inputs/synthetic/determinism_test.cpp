@@ -32,7 +32,7 @@ int run_cli(const std::string& args) {
 
 }  // namespace
 
-TEST_CASE("the same seed gives byte-identical recordings; other seeds differ", "[synthetic][determinism]") {
+TEST_CASE("the same seed gives byte-identical recordings, other seeds differ", "[synthetic][determinism]") {
   for (Modality m : {Modality::vr, Modality::tablet}) {
     SynthesisParams p;
     p.model = "chair";

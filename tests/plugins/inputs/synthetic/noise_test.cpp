@@ -138,7 +138,7 @@ TEST_CASE("hooks: a flick of hook_length at each end, turning back past 90°", "
   }
 }
 
-TEST_CASE("the global noise scale multiplies every magnitude; 0 gives perfect strokes", "[synthetic][noise]") {
+TEST_CASE("the global noise scale multiplies every magnitude, 0 gives perfect strokes", "[synthetic][noise]") {
   NoiseModel m{0.001, 0.003, 0.15, 2.0, 0.006, 0.2, 0.015};
   const NoiseModel half = scaled(m, 0.5);
   CHECK(half.jitter == 0.0005);

@@ -135,7 +135,7 @@ TEST_CASE("cylinder: two circles and four sides give the four side patches", "[s
   CHECK(caps == 2);
 }
 
-TEST_CASE("a crossing curve splits a patch in two; deleting it merges them back", "[soapfilm]") {
+TEST_CASE("a crossing curve splits a patch in two, deleting it merges them back", "[soapfilm]") {
   const double a = 0.2;
   const Vec3 p00(0, 0, 0), p10(a, 0, 0), p11(a, a, 0), p01(0, a, 0);
   std::vector<PreparedCurve> curves{{make_line(p00, p10), {0.0, 1.0}},
