@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+
+#include "sketchlab/run/distribution.hpp"
 #include <memory>
 #include <random>
 #include <time.h>
@@ -42,17 +44,11 @@ class Wrapped : public Corrector {
   cassie::CassieParams p_;
 };
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const auto i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
-  return v[std::clamp<std::size_t>(i == 0 ? 0 : i - 1, 0, v.size() - 1)];
-}
-
 void print(const std::string& name, const std::vector<double>& ms) {
-  std::cout << name << "_p50 " << percentile(ms, 0.5) << " ms\n"
-            << name << "_p95 " << percentile(ms, 0.95) << " ms\n"
-            << name << "_max " << percentile(ms, 1.0) << " ms\n";
+  const Distribution d = distribution(ms);
+  std::cout << name << "_p50 " << d.median << " ms\n"
+            << name << "_p95 " << d.p95 << " ms\n"
+            << name << "_max " << d.max << " ms\n";
 }
 
 Recording load(const std::string& name) {

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+
+#include "sketchlab/run/distribution.hpp"
 #include <vector>
 
 #include "patch_upkeep.hpp"
@@ -63,12 +65,6 @@ void add_tile(Edit& e, const Tile& tile, CurveId& next_curve, NodeId& next_node)
                       {ys[static_cast<std::size_t>(j)], static_cast<double>(i)}};
       e.nodes_added.push_back(n);
     }
-}
-
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(q * (v.size() - 1) + 0.5)))];
 }
 
 void run(int curves, const soapfilm::SoapfilmParams& params) {
@@ -145,12 +141,12 @@ void run(int curves, const soapfilm::SoapfilmParams& params) {
   const std::string p = "soapfilm." + std::to_string(curves);
   std::cout << p << ".curves " << sketch.network.curves().size() << " curves\n"
             << p << ".patches " << patch_count << " patches\n"
-            << p << ".mesh_per_patch_p50 " << percentile(per_patch, 0.5) << " ms\n"
-            << p << ".mesh_per_patch_p95 " << percentile(per_patch, 0.95) << " ms\n"
-            << p << ".upkeep_per_edit_p50 " << percentile(upkeep, 0.5) << " ms\n"
-            << p << ".upkeep_per_edit_p95 " << percentile(upkeep, 0.95) << " ms\n"
-            << p << ".search_per_edit_p50 " << percentile(search, 0.5) << " ms\n"
-            << p << ".walks_per_edit_p50 " << percentile(walk, 0.5) << " ms\n";
+            << p << ".mesh_per_patch_p50 " << distribution(per_patch).median << " ms\n"
+            << p << ".mesh_per_patch_p95 " << distribution(per_patch).p95 << " ms\n"
+            << p << ".upkeep_per_edit_p50 " << distribution(upkeep).median << " ms\n"
+            << p << ".upkeep_per_edit_p95 " << distribution(upkeep).p95 << " ms\n"
+            << p << ".search_per_edit_p50 " << distribution(search).median << " ms\n"
+            << p << ".walks_per_edit_p50 " << distribution(walk).median << " ms\n";
 }
 
 }  // namespace
