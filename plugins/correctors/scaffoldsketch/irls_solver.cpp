@@ -2,7 +2,9 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 namespace sketchlab::scaffoldsketch {
 namespace {
@@ -34,18 +36,34 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
   double cost = weighted_cost(terms, weights, a, b, a0, b0, anchor);
   int steps = 0;
   Vec3 r;
-  Eigen::Matrix<double, 3, 6> j;
+  Mat3 m;
   while (steps < max_steps && cost > 0) {
+    // Gauss–Newton normal equations from the factored Jacobians
+    // J_i = [fa·m, fb·m]: JᵀJ has blocks f f'·mᵀm, Jᵀr = (fa, fb)·mᵀr.
     Mat6 h = anchor * Mat6::Identity();
     Vec6 g;
     g << anchor * (a - a0), anchor * (b - b0);
     for (std::size_t i = 0; i < terms.size(); ++i) {
       if (weights[i] <= 0) continue;
-      const int rows = term_residual(terms[i], a, b, r, j);
-      const auto jr = j.topRows(rows);
-      h.noalias() += weights[i] * jr.transpose() * jr;
-      g.noalias() += weights[i] * jr.transpose() * r.head(rows);
+      double fa = 0, fb = 0;
+      const int rows = term_linearisation(terms[i], a, b, r, m, fa, fb);
+      Mat3 mtm;
+      Vec3 mtr;
+      if (rows == 1) {
+        const Vec3 row = m.row(0).transpose();
+        mtm = weights[i] * (row * row.transpose());
+        mtr = (weights[i] * r.x()) * row;
+      } else {
+        mtm = weights[i] * (m.transpose() * m);
+        mtr = weights[i] * (m.transpose() * r);
+      }
+      h.topLeftCorner<3, 3>() += (fa * fa) * mtm;
+      h.topRightCorner<3, 3>() += (fa * fb) * mtm;
+      h.bottomRightCorner<3, 3>() += (fb * fb) * mtm;
+      g.head<3>() += fa * mtr;
+      g.tail<3>() += fb * mtr;
     }
+    h.bottomLeftCorner<3, 3>() = h.topRightCorner<3, 3>().transpose();
     // Isotropic floor on the damping: directions no term constrains get
     // (numerically) zero steps instead of rounding noise over a tiny pivot.
     const double floor = 1e-14 * std::max(h.diagonal().maxCoeff(), 1e-300);
@@ -59,6 +77,11 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
         lambda *= 10;
         continue;
       }
+      // Converged when the Gauss–Newton model promises no measurable
+      // decrease: trying ever more damped steps at the rounding floor of
+      // the cost only spends evaluations (it was most of the solve time).
+      const double predicted = -g.dot(delta) - 0.5 * delta.dot(h * delta);
+      if (!(predicted > 1e-15 * cost)) return steps;
       const Vec3 na = a + delta.head<3>(), nb = b + delta.tail<3>();
       const double next = weighted_cost(terms, weights, na, nb, a0, b0, anchor);
       if (next < cost) {
@@ -80,41 +103,108 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
   return steps;
 }
 
-IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, const Vec3& b0,
-                      const IrlsOptions& options) {
+namespace {
+
+// Terms with the same energy for every l (same_energy up to 1e-9) share
+// their weight at every IRLS round (eq. 7 depends on C only), so
+// Σ w_i C_i = Σ_g m_g w_g C_g over the distinct terms g with multiplicity
+// m_g. Dense scaffolds have many such terms (parallel, perpendicular and
+// equal-length terms against lines corrected parallel or equal); merging
+// them is exact and keeps the solve small. Terms are binned by their
+// quantised defining values; a near-equal pair split across two bins stays
+// two terms, which is only slower.
+struct MergedTerms {
+  std::vector<ScaffoldTerm> unique;
+  std::vector<double> multiplicity;
+  std::vector<std::size_t> group;  // per input term: index into unique
+};
+
+MergedTerms merge_terms(const std::vector<ScaffoldTerm>& terms) {
+  constexpr double quantum = 1e-10;
+  constexpr double tolerance = 1e-9;
+  using Key = std::array<long long, 7>;
+  auto q = [](double v) { return std::llround(v / quantum); };
+  MergedTerms m;
+  m.group.resize(terms.size());
+  std::map<Key, std::size_t> bins;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const ScaffoldTerm& t = terms[i];
+    Vec3 x = Vec3::Zero(), y = Vec3::Zero();
+    switch (t.kind) {
+      case TermKind::point_point: x = t.p; break;
+      case TermKind::point_line:
+        x = t.ka;
+        y = t.kb;
+        if (std::lexicographical_compare(y.data(), y.data() + 3, x.data(), x.data() + 3))
+          std::swap(x, y);
+        break;
+      case TermKind::perpendicular:
+      case TermKind::parallel: {
+        x = t.d;
+        int axis = 0;
+        x.cwiseAbs().maxCoeff(&axis);
+        if (x(axis) < 0) x = -x;  // d and -d give the same energy
+        break;
+      }
+      case TermKind::equal_length: x.x() = (t.ka - t.kb).norm(); break;
+    }
+    std::size_t g = m.unique.size();
+    if (x.allFinite() && y.allFinite() && x.cwiseAbs().maxCoeff() < 1e6 &&
+        y.cwiseAbs().maxCoeff() < 1e6) {
+      const Key key{static_cast<long long>(t.kind) * 3 + static_cast<long long>(t.at),
+                    q(x.x()), q(x.y()), q(x.z()), q(y.x()), q(y.y()), q(y.z())};
+      const auto [it, fresh] = bins.try_emplace(key, g);
+      if (!fresh && same_energy(m.unique[it->second], t, tolerance)) g = it->second;
+    }
+    if (g == m.unique.size()) {
+      m.unique.push_back(t);
+      m.multiplicity.push_back(0.0);
+    }
+    m.multiplicity[g] += 1.0;
+    m.group[i] = g;
+  }
+  return m;
+}
+
+}  // namespace
+
+IrlsResult solve_irls(const std::vector<ScaffoldTerm>& input_terms, const Vec3& a0,
+                      const Vec3& b0, const IrlsOptions& options) {
   IrlsResult result;
   result.a = a0;
   result.b = b0;
+  if (input_terms.empty()) {
+    result.converged = true;
+    return result;
+  }
+  const MergedTerms merged = merge_terms(input_terms);
+  const std::vector<ScaffoldTerm>& terms = merged.unique;
   const std::size_t n = terms.size();
   const double eps = options.epsilon;
   std::vector<double> energy = energies_at(terms, a0, b0);
-  std::vector<double> w(n);
-  std::vector<bool> satisfied(n);
+  std::vector<double> w(n), objective_weight(n);
+  std::vector<bool> satisfied(n), now(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double w0 = terms[i].kind == TermKind::point_point ? options.point_point_weight
                                                              : options.other_weight;
     w[i] = w0 / (eps + energy[i]);  // iteration 0 of eq. 7 on the input line
     satisfied[i] = energy[i] <= eps;
   }
-  if (n == 0) {
-    result.converged = true;
-    return result;
-  }
 
   Vec3 a = a0, b = b0;
   for (int k = 1; k <= options.max_iterations; ++k) {
     const Vec3 pa = a, pb = b;
-    result.solver_steps += minimise_weighted(terms, w, a, b, a0, b0);  // eq. 6
+    for (std::size_t i = 0; i < n; ++i) objective_weight[i] = merged.multiplicity[i] * w[i];
+    result.solver_steps += minimise_weighted(terms, objective_weight, a, b, a0, b0);  // eq. 6
     result.iterations = k;
-    energy = energies_at(terms, a, b);
-    std::vector<bool> now(n);
     for (std::size_t i = 0; i < n; ++i) {
+      energy[i] = term_energy(terms[i], a, b);
       w[i] = 1.0 / (eps + energy[i]);  // eq. 7
       now[i] = energy[i] <= eps;
     }
     const double moved = std::max((a - pa).norm(), (b - pb).norm());
     const bool stable = now == satisfied;
-    satisfied = std::move(now);
+    std::swap(satisfied, now);
     if (stable && moved <= options.move_tolerance) {
       result.converged = true;
       break;
@@ -122,10 +212,10 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, co
   }
 
   // The binary limit of the weights: discarded terms drop out.
-  std::vector<double> polish(n);
-  for (std::size_t i = 0; i < n; ++i) polish[i] = satisfied[i] ? w[i] : 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    objective_weight[i] = satisfied[i] ? merged.multiplicity[i] * w[i] : 0.0;
   Vec3 pa = a, pb = b;
-  result.solver_steps += minimise_weighted(terms, polish, pa, pb, a0, b0);
+  result.solver_steps += minimise_weighted(terms, objective_weight, pa, pb, a0, b0);
   if (pa.allFinite() && pb.allFinite()) {
     a = pa;
     b = pb;
@@ -139,11 +229,15 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, co
   }
   result.a = a;
   result.b = b;
-  result.weights = w;
-  result.energies = energies_at(terms, a, b);
-  result.enforced.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    result.enforced[i] = satisfied[i] && result.energies[i] <= eps;
+  const std::size_t count = input_terms.size();
+  result.weights.resize(count);
+  result.energies = energies_at(input_terms, a, b);
+  result.enforced.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t g = merged.group[i];
+    result.weights[i] = w[g];
+    result.enforced[i] = satisfied[g] && result.energies[i] <= eps;
+  }
   return result;
 }
 

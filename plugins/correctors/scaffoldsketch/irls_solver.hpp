@@ -12,7 +12,7 @@ struct IrlsOptions {
   double other_weight = 1.0;          // initial weight of the others
   double epsilon = 1e-12;             // ε of eq. 7; C <= ε counts as satisfied
   int max_iterations = 50;            // IRLS rounds
-  double move_tolerance = 1e-9;       // m: endpoints moving less than this are settled
+  double move_tolerance = 1e-7;       // m: endpoints moving less than this are settled (0.1·sqrt(ε))
 };
 
 struct IrlsResult {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "sketchlab/geometry/bezier.hpp"
 
@@ -42,38 +43,36 @@ bool is_scaffold_line(const NetworkCurve& curve) {
          curve.curve.control_points.size() == 4;
 }
 
-int term_residual(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& r,
-                  Eigen::Matrix<double, 3, 6>& jacobian) {
-  jacobian.setZero();
+int term_linearisation(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& r, Mat3& m,
+                       double& fa, double& fb) {
+  m.setZero();
   r.setZero();
   const Vec3 v = b - a;
   const double length = v.norm();
   switch (term.kind) {
     case TermKind::point_point: {  // eq. 1: r = l_i - p
-      const auto [fa, fb] = line_point_factors(term.at);
+      std::tie(fa, fb) = line_point_factors(term.at);
       r = line_point(term.at, a, b) - term.p;
-      jacobian.block<3, 3>(0, 0) = fa * Mat3::Identity();
-      jacobian.block<3, 3>(0, 3) = fb * Mat3::Identity();
+      m = Mat3::Identity();
       return 3;
     }
     case TermKind::point_line: {  // eq. 2: r = (k_a - k_b) x (k_a - l_i) / |k_a - k_b|
       const Vec3 e = term.ka - term.kb;
       const double n = e.norm();
-      const auto [fa, fb] = line_point_factors(term.at);
+      std::tie(fa, fb) = line_point_factors(term.at);
       if (n < min_length) {  // degenerate k: fall back to the point distance
         r = line_point(term.at, a, b) - term.ka;
-        jacobian.block<3, 3>(0, 0) = fa * Mat3::Identity();
-        jacobian.block<3, 3>(0, 3) = fb * Mat3::Identity();
+        m = Mat3::Identity();
         return 3;
       }
       r = e.cross(term.ka - line_point(term.at, a, b)) / n;
-      const Mat3 dr = -cross_matrix(e) / n;  // d r / d l_i
-      jacobian.block<3, 3>(0, 0) = fa * dr;
-      jacobian.block<3, 3>(0, 3) = fb * dr;
+      m = -cross_matrix(e) / n;  // d r / d l_i
       return 3;
     }
     case TermKind::perpendicular:
     case TermKind::parallel: {
+      fa = -1.0;  // functions of b - a
+      fb = 1.0;
       if (length < min_length) {
         r.x() = 1.0;
         return 1;
@@ -84,40 +83,88 @@ int term_residual(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& 
       const Vec3 g = (term.d - c * u) / length;
       if (term.kind == TermKind::perpendicular) {  // eq. 3: r = u·d
         r.x() = c;
-        jacobian.block<1, 3>(0, 0) = -g.transpose();
-        jacobian.block<1, 3>(0, 3) = g.transpose();
-      } else {
-        // Parallel as |u x d| = sin θ (same zero set and inclusion angle as
-        // eq. 4's (1 - |u·d|)², whose θ⁴ well is too flat to tell a
-        // satisfied constraint from a compromise; see README).
-        r = u.cross(term.d);
-        const Mat3 p = (Mat3::Identity() - u * u.transpose()) / length;
-        const Mat3 dr = -cross_matrix(term.d) * p;  // d(u x d)/db
-        jacobian.block<3, 3>(0, 0) = -dr;
-        jacobian.block<3, 3>(0, 3) = dr;
-        return 3;
+        m.row(0) = g.transpose();
+        return 1;
       }
-      return 1;
+      // Parallel as |u x d| = sin θ (same zero set and inclusion angle as
+      // eq. 4's (1 - |u·d|)², whose θ⁴ well is too flat to tell a satisfied
+      // constraint from a compromise; see README).
+      r = u.cross(term.d);
+      const Mat3 p = (Mat3::Identity() - u * u.transpose()) / length;
+      m = -cross_matrix(term.d) * p;  // d(u x d)/db
+      return 3;
     }
     case TermKind::equal_length: {  // eq. 5: r = |l_a - l_b| / |k_a - k_b| - 1
+      fa = -1.0;
+      fb = 1.0;
       const double k = std::max((term.ka - term.kb).norm(), min_length);
       r.x() = length / k - 1.0;
-      if (length >= min_length) {
-        const Vec3 u = v / length;
-        jacobian.block<1, 3>(0, 0) = -u.transpose() / k;
-        jacobian.block<1, 3>(0, 3) = u.transpose() / k;
-      }
+      if (length >= min_length) m.row(0) = (v / length).transpose() / k;
       return 1;
     }
   }
+  fa = fb = 0.0;
   return 0;
 }
 
+int term_residual(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& r,
+                  Eigen::Matrix<double, 3, 6>& jacobian) {
+  Mat3 m;
+  double fa = 0, fb = 0;
+  const int rows = term_linearisation(term, a, b, r, m, fa, fb);
+  jacobian.block<3, 3>(0, 0) = fa * m;
+  jacobian.block<3, 3>(0, 3) = fb * m;
+  return rows;
+}
+
 double term_energy(const ScaffoldTerm& term, const Vec3& a, const Vec3& b) {
-  Vec3 r;
-  Eigen::Matrix<double, 3, 6> j;
-  term_residual(term, a, b, r, j);
-  return r.squaredNorm();
+  // The squared residual of term_residual without its Jacobian: the line
+  // search of the solver evaluates this far more often than the Jacobians.
+  switch (term.kind) {
+    case TermKind::point_point: return (line_point(term.at, a, b) - term.p).squaredNorm();
+    case TermKind::point_line: {
+      const Vec3 e = term.ka - term.kb;
+      const double n2 = e.squaredNorm();
+      const Vec3 x = line_point(term.at, a, b);
+      if (n2 < min_length * min_length) return (x - term.ka).squaredNorm();
+      return e.cross(term.ka - x).squaredNorm() / n2;
+    }
+    case TermKind::perpendicular:
+    case TermKind::parallel: {
+      const Vec3 v = b - a;
+      const double length = v.norm();
+      if (length < min_length) return 1.0;
+      if (term.kind == TermKind::perpendicular) {
+        const double c = v.dot(term.d) / length;
+        return c * c;
+      }
+      return v.cross(term.d).squaredNorm() / (length * length);
+    }
+    case TermKind::equal_length: {
+      const double k = std::max((term.ka - term.kb).norm(), min_length);
+      const double r = (b - a).norm() / k - 1.0;
+      return r * r;
+    }
+  }
+  return 0.0;
+}
+
+bool same_energy(const ScaffoldTerm& s, const ScaffoldTerm& t, double tolerance) {
+  if (s.kind != t.kind) return false;
+  switch (s.kind) {
+    case TermKind::point_point: return s.at == t.at && (s.p - t.p).norm() <= tolerance;
+    case TermKind::point_line:
+      return s.at == t.at && (((s.ka - t.ka).norm() <= tolerance && (s.kb - t.kb).norm() <= tolerance) ||
+                              ((s.ka - t.kb).norm() <= tolerance && (s.kb - t.ka).norm() <= tolerance));
+    case TermKind::perpendicular:
+    case TermKind::parallel:  // d and -d give the same energy
+      return (s.d - t.d).norm() <= tolerance || (s.d + t.d).norm() <= tolerance;
+    case TermKind::equal_length: {
+      const double ks = (s.ka - s.kb).norm(), kt = (t.ka - t.kb).norm();
+      return std::abs(ks - kt) <= tolerance * std::max(ks, kt);
+    }
+  }
+  return false;
 }
 
 std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, const Network& network,
@@ -191,12 +238,21 @@ std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, cons
     t.kind = TermKind::equal_length;
     if (term_energy(t, a, b) < length_limit) terms.push_back(t);
   }
+  // The vertical axis is the one direction that is not a scaffold line
+  // ("all existing keypoints, directions, and lines", §4.1): eq. 4 with
+  // d = up (verticals) and eq. 3 with d = up (horizontals). Without the
+  // latter a freehand base is never level, so a later vertical edge faces a
+  // real conflict between up and the base's normal that IRLS may settle
+  // differently per edge (README).
   if (workspace.up.norm() > min_length) {
     ScaffoldTerm t;
     t.d = workspace.up.normalized();
     t.curve = 0;
     t.kind = TermKind::parallel;
     if (params.vertical_parallel && term_energy(t, a, b) < parallel_limit) terms.push_back(t);
+    t.kind = TermKind::perpendicular;
+    if (params.vertical_perpendicular && term_energy(t, a, b) < perpendicular_limit)
+      terms.push_back(t);
   }
   return terms;
 }

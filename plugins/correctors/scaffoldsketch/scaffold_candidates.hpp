@@ -34,16 +34,30 @@ bool is_scaffold_line(const NetworkCurve& curve);
 // them (maximally unsatisfied, never NaN).
 double term_energy(const ScaffoldTerm& term, const Vec3& a, const Vec3& b);
 
+// Whether s and t have the same energy for every l up to `tolerance`
+// (metres for points and line ends, unit-vector difference for directions,
+// relative for lengths): e.g. parallel to two lines drawn parallel. Such
+// terms also share their IRLS weight, so the solver may merge them.
+bool same_energy(const ScaffoldTerm& s, const ScaffoldTerm& t, double tolerance);
+
 // Residual r (rows used: 3 for point kinds and parallel, 1 else; returned) with
 // |r|² = C, and its Jacobian with respect to x = (a, b) (rows x 6).
 int term_residual(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& r,
                   Eigen::Matrix<double, 3, 6>& jacobian);
 
+// The same residual with its Jacobian in factored form: every term depends
+// on (a, b) through one point fa·a + fb·b (the line point, or b - a for
+// directions and length), so J = [fa·m, fb·m] with m = dr/d(that point)
+// (rows x 3, unused rows zero). The solver's normal equations need only mᵀm.
+int term_linearisation(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, Vec3& r, Mat3& m,
+                       double& fa, double& fb);
+
 // Every candidate whose energy on the input line (a, b) is below its
 // threshold: point–point and point–line within point_distance/s of l_a, l_b
 // (and l_m for point–point when midpoint_snapping), perpendicular and parallel
 // within angle_threshold, equal length within equal_length_tolerance, against
-// every scaffold line (and workspace.up for parallel). Coincident keypoints
+// every scaffold line, and workspace.up for parallel (eq. 4) and
+// perpendicular (eq. 3). Coincident keypoints
 // (several lines sharing a corner) give one point–point term. Deterministic
 // order: by line point, then kind, then curve id.
 std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, const Network& network,

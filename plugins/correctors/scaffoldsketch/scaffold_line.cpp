@@ -105,7 +105,11 @@ Correction correct_scaffold_line(const Vec3& a, const Vec3& b, StrokeId stroke,
   options.other_weight = params.other_weight;
   options.epsilon = params.epsilon;
   options.max_iterations = params.max_iterations;
-  options.move_tolerance = 1e-9 / scale;
+  // Settled: the endpoints move by less than a tenth of the distance ε
+  // resolves (C <= ε is a point within sqrt(ε)). Smaller moves are the
+  // slow creep of a compromise below ε between nearly compatible satisfied
+  // terms, which took up to 40 rounds on CASSIE's chair (paper: 2–6).
+  options.move_tolerance = 0.1 * std::sqrt(params.epsilon) / scale;
   const IrlsResult result = solve_irls(terms, a, b, options);
 
   NetworkCurve curve;

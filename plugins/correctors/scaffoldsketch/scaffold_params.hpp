@@ -19,6 +19,7 @@ struct ScaffoldParams {
   double tick_length = 0.03;             // m: shorter scaffold strokes are ticks (§3.2)
   bool midpoint_snapping = true;         // the new line's midpoint l_m also takes point–point terms
   bool vertical_parallel = true;         // parallel-to-up candidate (eq. 4 with d = workspace.up)
+  bool vertical_perpendicular = true;    // perpendicular-to-up candidate (eq. 3 with d = workspace.up)
   double node_tolerance = 1e-6;          // m: an endpoint this close to a curve makes a Node
 };
 

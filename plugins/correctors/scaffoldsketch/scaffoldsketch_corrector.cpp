@@ -31,6 +31,8 @@ std::vector<ParamSpec> parameter_specs() {
        "the new line's midpoint keypoint also takes point–point constraints, §4.1"},
       {"vertical_parallel", ParamType::boolean, s.vertical_parallel, {}, {}, {}, "",
        "parallel-to-vertical-axis (workspace.up) candidate, §4.1 eq. 4"},
+      {"vertical_perpendicular", ParamType::boolean, s.vertical_perpendicular, {}, {}, {}, "",
+       "perpendicular-to-vertical-axis (horizontal) candidate, §4.1 eq. 3 with d = up"},
       {"node_tolerance", ParamType::real, s.node_tolerance, 0.0, 0.01, {}, "m",
        "a corrected end within this of a curve becomes a Node"},
       {"sample_spacing", ParamType::real, h.sample_spacing, 0.001, 0.1, {}, "m",
@@ -63,6 +65,7 @@ ScaffoldSketchCorrector::ScaffoldSketchCorrector(const Params& p) {
   scaffold_.tick_length = p.real("tick_length");
   scaffold_.midpoint_snapping = p.boolean("midpoint_snapping");
   scaffold_.vertical_parallel = p.boolean("vertical_parallel");
+  scaffold_.vertical_perpendicular = p.boolean("vertical_perpendicular");
   scaffold_.node_tolerance = p.real("node_tolerance");
   shape_.sample_spacing = p.real("sample_spacing");
   shape_.keypoint_distance = p.real("keypoint_distance");

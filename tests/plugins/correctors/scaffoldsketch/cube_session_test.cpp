@@ -2,9 +2,11 @@
 // kernel Session become a cube (Figure 1/3 style scaffold).
 #include <catch2/catch.hpp>
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <random>
 
@@ -50,10 +52,6 @@ Stroke noisy_line(StrokeId id, const Vec3& a, const Vec3& b, std::mt19937& rng) 
 TEST_CASE("twelve noisy cube edges become a cube", "[scaffoldsketch]") {
   const double h = 0.3;
   const Vec3 o(-0.1, 1.0, 0.2);
-  std::array<Vec3, 8> c;
-  for (int i = 0; i < 8; ++i)
-    c[static_cast<std::size_t>(i)] =
-        o + h * Vec3((i == 1 || i == 2 || i == 5 || i == 6), i >= 4, (i == 2 || i == 3 || i == 6 || i == 7));
   // Drawing order: the base, the verticals, the top (each stroke starts at a
   // corner that already exists, as people draw).
   const std::array<std::pair<int, int>, 12> edges{{{0, 1}, {1, 2}, {2, 3}, {3, 0},
@@ -61,15 +59,18 @@ TEST_CASE("twelve noisy cube edges become a cube", "[scaffoldsketch]") {
                                                    {4, 5}, {5, 6}, {6, 7}, {7, 4}}};
   const int group[12] = {0, 1, 0, 1, 2, 2, 2, 2, 0, 1, 0, 1};  // parallel classes
 
-  int exact_cubes = 0;
-  for (unsigned seed = 1; seed <= 20; ++seed) {
+  for (unsigned seed = 1; seed <= 50; ++seed) {
     INFO("seed " << seed);
     std::mt19937 rng(seed);
-    // The base is drawn freehand, so it is never exactly horizontal and
-    // parallel-to-up (eq. 4) conflicts with perpendicularity to the base.
-    // IRLS resolves that conflict per vertical edge; in a few seeds it
-    // resolves it differently for two of them, and then the top cannot close
-    // exactly (README, limitations). The test requires 16 of 20 seeds exact.
+    // A cube standing on the floor, turned by a random yaw about the
+    // vertical axis (workspace.up = y), so no edge need be axis-aligned.
+    const double yaw = std::uniform_real_distribution<double>(0.0, std::numbers::pi)(rng);
+    const Mat3 turn = Eigen::AngleAxisd(yaw, Vec3::UnitY()).toRotationMatrix();
+    std::array<Vec3, 8> c;
+    for (int i = 0; i < 8; ++i)
+      c[static_cast<std::size_t>(i)] =
+          o + turn * (h * Vec3((i == 1 || i == 2 || i == 5 || i == 6), i >= 4,
+                               (i == 2 || i == 3 || i == 6 || i == 7)));
     ScaffoldParams params;
     Session session(Workspace{}, std::make_shared<ScaffoldSketchCorrector>(params, ShapeParams{}),
                     nullptr);
@@ -83,10 +84,18 @@ TEST_CASE("twelve noisy cube edges become a cube", "[scaffoldsketch]") {
       const Vec3 to_aim = shown[static_cast<std::size_t>(j)].value_or(
           from_aim + c[static_cast<std::size_t>(j)] - c[static_cast<std::size_t>(i)]);
       const Stroke s = noisy_line(100 + e, from_aim, to_aim, rng);
+      // The noise is the paper's user-study regime: ends a few cm off, the
+      // direction within the 10° of eq. 3-4 (so every intended relation is
+      // a candidate; beyond that no corrector could be asked for a cube).
+      const Vec3 drawn = s.samples.back().position - s.samples.front().position;
+      const Vec3 aimed = to_aim - from_aim;
+      REQUIRE(std::atan2(drawn.cross(aimed).norm(), drawn.dot(aimed)) < 10 * degrees);
+      REQUIRE((s.samples.front().position - from_aim).norm() <= 0.02);
+      REQUIRE((s.samples.back().position - to_aim).norm() <= 0.02);
       const StepReport r = session.handle(Event{0.1 * static_cast<double>(e), StrokeEvent{s}});
       REQUIRE(r.error.empty());
       CHECK(r.stats.iterations >= (e == 0 ? 0 : 1));  // the first edge has nothing to relate to
-      CHECK(r.stats.iterations <= params.max_iterations);
+      CHECK(r.stats.iterations <= 6);  // the paper sees 2-6 IRLS rounds
       const auto ids = curves_of_stroke(session.sketch(), 100 + e);
       REQUIRE(ids.size() == 1);
       const Curve& line = session.sketch().network.find_curve(ids[0])->curve;
@@ -105,7 +114,6 @@ TEST_CASE("twelve noisy cube edges become a cube", "[scaffoldsketch]") {
       from[e] = line.control_points.front();
       to[e] = line.control_points.back();
     }
-    bool exact = true;
     // Corners coincide (1e-6 m), parallel classes within 0.01°, equal lengths
     // within 1e-6 relative.
     for (int corner = 0; corner < 8; ++corner) {
@@ -115,27 +123,20 @@ TEST_CASE("twelve noisy cube edges become a cube", "[scaffoldsketch]") {
         if (edges[e].second == corner) at.push_back(to[e]);
       }
       REQUIRE(at.size() == 3);
-      for (const Vec3& p : at) exact = exact && (p - at[0]).norm() < 1e-6;
+      for (const Vec3& p : at) CHECK((p - at[0]).norm() < 1e-6);
     }
-    // Parallel classes and equal lengths.
     const double length0 = (to[0] - from[0]).norm();
     for (std::size_t e = 0; e < 12; ++e) {
-      exact = exact && std::abs((to[e] - from[e]).norm() / length0 - 1) < 1e-6;
+      CHECK(std::abs((to[e] - from[e]).norm() / length0 - 1) < 1e-6);
       for (std::size_t f = 0; f < 12; ++f) {
         if (group[e] != group[f]) continue;
         const Vec3 u = (to[e] - from[e]).normalized(), v = (to[f] - from[f]).normalized();
         const double angle = std::atan2(u.cross(v).norm(), std::abs(u.dot(v)));
-        exact = exact && angle < 0.01 * degrees;
+        CHECK(angle < 0.01 * degrees);
       }
     }
     // Each corner is one node joining its three edges.
-    if (!exact) {
-      WARN("seed " << seed << ": the vertical-axis conflict was resolved inconsistently");
-      continue;
-    }
-    ++exact_cubes;
     CHECK(sketch.network.nodes().size() == 8);
     for (const auto& [id, node] : sketch.network.nodes()) CHECK(node.incidences.size() == 3);
   }
-  CHECK(exact_cubes >= 16);
 }

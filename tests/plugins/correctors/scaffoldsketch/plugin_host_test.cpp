@@ -68,3 +68,41 @@ TEST_CASE("replaying hat.jsonl through the plugin", "[scaffoldsketch][slow]") {
   CHECK(lines + curves + ticks == strokes);  // every stroke got a mode
   CHECK(curves > 0);
 }
+
+TEST_CASE("scaffold lines of CASSIE sessions converge in a bounded number of IRLS rounds",
+          "[scaffoldsketch][slow]") {
+  // Regression: a line redrawn over a slightly tilted one (also parallel to
+  // up) crept for 40-50 rounds below ε before the settle test used sqrt(ε).
+  PluginHost host;
+  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+  for (const char* name : {"data/recordings/chair.jsonl", "data/recordings/02-1-2.jsonl"}) {
+    INFO(name);
+    const auto corrector = host.make_corrector("scaffoldsketch", {});
+    const Recording rec = read_recording(test::source_path(name));
+    Session session(rec.header.workspace, corrector, nullptr);
+    const Vec3 up = rec.header.workspace.up.normalized();
+    int lines = 0, level = 0;
+    for (const Event& e : rec.events) {
+      const StepReport r = session.handle(e);
+      if (!r.stats.extra.count("mode") || r.stats.extra.at("mode") != 0) continue;
+      ++lines;
+      INFO("stroke " << *r.stroke);
+      CHECK(r.error.empty());
+      CHECK(r.stats.extra.at("converged") == 1);
+      CHECK(r.stats.iterations <= 20);
+      for (const Constraint& k : r.constraints) {
+        if (!k.enforced || k.kind != ConstraintKind::perpendicular ||
+            k.references[1].kind != ConstraintRef::Kind::axis)
+          continue;
+        ++level;  // the new line is level to within ε
+        for (const auto& [id, c] : session.sketch().network.curves()) {
+          if (c.source_stroke != *r.stroke || c.curve.kind != CurveKind::line) continue;
+          const Vec3 u = (c.curve.control_points.back() - c.curve.control_points.front()).normalized();
+          CHECK(std::abs(u.dot(up)) < 1e-6);
+        }
+      }
+    }
+    CHECK(lines > 0);
+    CHECK(level > 0);
+  }
+}

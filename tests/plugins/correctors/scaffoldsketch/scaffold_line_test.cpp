@@ -205,3 +205,85 @@ TEST_CASE("direction-only terms rotate a short line without stretching it", "[sc
   CHECK((r.b - r.a).norm() == Approx((b0 - a0).norm()).epsilon(0.05));
   CHECK(((r.a + r.b) / 2 - (a0 + b0) / 2).norm() < 0.01);
 }
+
+TEST_CASE("a nearly level line becomes exactly level, a steep one stays", "[scaffoldsketch]") {
+  // Eq. 3 with d = workspace.up: the vertical axis is a direction of §4.1.
+  const Sketch sketch;  // nothing else to relate to
+  const Vec3 up = sketch.workspace.up.normalized();
+  const Vec3 a(0.1, 1.0, 0.2);
+  for (const double tilt : {-9.0, -3.0, 0.5, 6.0, 9.5}) {
+    INFO("tilt " << tilt);
+    const Vec3 b = a + 0.4 * Vec3(std::cos(tilt * degrees), std::sin(tilt * degrees), 0.2).normalized();
+    const Correction c = correct_scaffold_line(a, b, 4, sketch, ScaffoldParams{}, 1.0);
+    REQUIRE(c.error.empty());
+    REQUIRE(c.constraints.size() == 1);
+    const Constraint& k = c.constraints[0];
+    CHECK(k.kind == ConstraintKind::perpendicular);
+    CHECK(k.references[1].kind == ConstraintRef::Kind::axis);
+    CHECK(k.enforced);
+    const Curve& line = c.edit.curves_added[0].curve;
+    const Vec3 u = (line.control_points.back() - line.control_points.front()).normalized();
+    CHECK(std::abs(u.dot(up)) < 1e-9);
+    // The nearest level line to the input (eq. 6's anchor): the horizontal
+    // projection of the drawn line, around the same midpoint.
+    const Vec3 level = (b - a) - up * up.dot(b - a);
+    CHECK(((line.control_points.back() - line.control_points.front()) - level).norm() < 1e-6);
+    CHECK(((line.control_points.back() + line.control_points.front()) / 2 - (a + b) / 2).norm() <
+          1e-6);
+  }
+  // 12° off level is outside the 10° threshold: no candidate, line as drawn.
+  const Vec3 b = a + 0.4 * Vec3(std::cos(12 * degrees), std::sin(12 * degrees), 0);
+  const Correction c = correct_scaffold_line(a, b, 5, sketch, ScaffoldParams{}, 1.0);
+  CHECK(c.constraints.empty());
+  CHECK((c.edit.curves_added[0].curve.control_points.back() - b).norm() < 1e-12);
+  // And the parameter turns it off.
+  ScaffoldParams off;
+  off.vertical_perpendicular = false;
+  const Vec3 level = a + Vec3(0.4, 0.02, 0);
+  CHECK(correct_scaffold_line(a, level, 6, sketch, off, 1.0).constraints.empty());
+}
+
+TEST_CASE("terms with equal energy are merged without changing the IRLS result",
+          "[scaffoldsketch]") {
+  // Parallel to two lines drawn parallel (d and -d), equal length to two
+  // lines of one length: the merged solve must equal the solve where each
+  // duplicate is written once with twice the weight, i.e. eq. 6 itself.
+  std::vector<ScaffoldTerm> terms(6);
+  terms[0].kind = TermKind::point_point;
+  terms[0].p = Vec3(0, 0, 0);
+  terms[1].kind = TermKind::parallel;
+  terms[1].d = Vec3(0, 1, 0);
+  terms[2] = terms[1];
+  terms[2].d = Vec3(0, -1, 0);
+  terms[3].kind = TermKind::equal_length;
+  terms[3].ka = Vec3(1, 0, 0);
+  terms[3].kb = Vec3(1, 0.3, 0);
+  terms[4] = terms[3];
+  terms[4].ka = Vec3(2, 0, 0);
+  terms[4].kb = Vec3(2, 0, 0.3);
+  terms[5].kind = TermKind::perpendicular;  // conflicts with the parallel pair
+  terms[5].d = Vec3(0.2, 1, 0).normalized();
+  const Vec3 a0(0.01, -0.01, 0.005), b0(0.03, 0.33, -0.02);
+  const IrlsResult merged = solve_irls(terms, a0, b0, {});
+  REQUIRE(merged.enforced.size() == 6);
+  CHECK(merged.enforced[0]);
+  CHECK(merged.enforced[1]);
+  CHECK(merged.enforced[2]);
+  CHECK(merged.enforced[3]);
+  CHECK(merged.enforced[4]);
+  CHECK_FALSE(merged.enforced[5]);
+  CHECK(merged.weights[1] == merged.weights[2]);
+  CHECK(merged.weights[3] == merged.weights[4]);
+  CHECK(merged.a.norm() < 1e-9);
+  CHECK(std::abs((merged.b - merged.a).norm() - 0.3) < 1e-9);
+  CHECK((merged.b - merged.a).normalized().cross(Vec3::UnitY()).norm() < 1e-9);
+
+  // Reference: eq. 6 with plain weights and no merging, through the same
+  // minimiser, equals the merged objective term by term.
+  std::vector<double> w(6);
+  for (std::size_t i = 0; i < 6; ++i) w[i] = merged.weights[i] * (merged.enforced[i] ? 1 : 0);
+  Vec3 a = merged.a, b = merged.b;
+  minimise_weighted(terms, w, a, b, a0, b0);
+  CHECK((a - merged.a).norm() < 1e-12);
+  CHECK((b - merged.b).norm() < 1e-12);
+}
