@@ -16,6 +16,12 @@ int main(int argc, char** argv) {
 #ifdef SKETCHLAB_HAVE_VIEWER
   sketchlab::cli::add_render_command(app, exit_code);
 #endif
+#ifdef SKETCHLAB_HAVE_DESKTOP_VIEWER
+  sketchlab::cli::add_view_command(app, exit_code);
+#endif
+#ifdef SKETCHLAB_HAVE_VR_VIEWER
+  sketchlab::cli::add_vr_command(app, exit_code);
+#endif
   sketchlab::cli::add_teacher_forced_command(app, exit_code);
   sketchlab::cli::add_record_command(app, exit_code);
   try {

@@ -1,24 +1,37 @@
 // Soapfilm surfacer benchmark (built from plugins/surfacers/soapfilm as
 // soapfilm_bench). Sketches of 100 and 2,000 curves made of 5x5 curve grids
 // ("tiles") on a wavy surface, every cycle already a patch. Measures the time
-// to mesh one patch (p50, p95) and the whole upkeep per edit (adding a curve
-// across one tile: searches, crossed patches, meshing), which should not
+// to mesh one patch (p50, p95, and per stage) and the upkeep per edit (adding
+// a curve across one tile, then deleting it), split into meshing and the
+// graph/cycle part (searches, crossed patches, bookkeeping), which should not
 // depend on the sketch size. Prints "name value unit" lines.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <iostream>
-
-#include "sketchlab/run/distribution.hpp"
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "boundary_polyline.hpp"
+#include "patch_mesh.hpp"
 #include "patch_upkeep.hpp"
+#include "sketchlab/run/distribution.hpp"
 #include "soapfilm_surfacer.hpp"
 
 namespace {
 
 using namespace sketchlab;
 using clock_type = std::chrono::steady_clock;
+
+// CPU time of this thread (ms): the build machine is shared, so wall times
+// swing with its load; CPU time does not.
+double cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
 
 double height(double x, double y) { return 0.03 * std::sin(6.0 * x) * std::cos(5.0 * y); }
 
@@ -92,19 +105,34 @@ void run(int curves, const soapfilm::SoapfilmParams& params) {
   const std::size_t patch_count = patches.patches_added.size();
   sketch.network.apply(patches);
 
-  // Time per patch: mesh the patches of the first tiles.
-  std::vector<double> per_patch;
+  // Time per patch: mesh the patches of the first tiles, by stage.
+  std::vector<double> per_patch, per_patch_cpu, fill, remesh, smooth, output, border_points;
   for (const auto& [id, p] : sketch.network.patches()) {
     if (per_patch.size() >= 64) break;
     const auto t0 = clock_type::now();
+    const double c0 = cpu_ms();
     auto made = soapfilm::make_patch(sketch.network, id, p.boundary, true, params);
+    per_patch_cpu.push_back(cpu_ms() - c0);
     per_patch.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
     if (!made) std::cerr << "mesh failed for patch " << id << "\n";
+    // The same patch again, stage by stage.
+    const auto poly = soapfilm::boundary_polyline(sketch.network, p.boundary, params.edge_length,
+                                                  params.max_boundary_points);
+    soapfilm::PatchMeshTimings t;
+    soapfilm::patch_mesh(poly.points, poly.spacing, params.mesh, &t);
+    fill.push_back(t.fill_ms);
+    remesh.push_back(t.remesh_ms);
+    smooth.push_back(t.smooth_ms);
+    output.push_back(t.output_ms);
+    border_points.push_back(static_cast<double>(poly.points.size()));
   }
 
   // Upkeep per edit: a y-curve through the middle of a tile's first column
-  // of cells, crossing the 5 x-curves (splits 4 patches into 8).
-  std::vector<double> upkeep, search, walk;
+  // of cells, crossing the 5 x-curves (splits 4 patches into 8); then the
+  // same curve deleted (its 8 patches go with it, the 4 come back). The edits
+  // are recorded in the history as a session would, so the deletion reads it.
+  std::vector<double> upkeep, search, mesh, walk, del_upkeep, del_search;
+  std::vector<double> upkeep_cpu, graph_cpu, del_graph_cpu;
   const int edits = std::min(tiles, 20);
   for (int k = 0; k < edits; ++k) {
     const Tile& tile = placed[static_cast<std::size_t>(k * tiles / edits)];
@@ -127,26 +155,66 @@ void run(int curves, const soapfilm::SoapfilmParams& params) {
       add.nodes_added.push_back(n);
     }
     const Edit undo = sketch.network.apply(add);
-    const auto t0 = clock_type::now();
+    double c0 = cpu_ms();
+    soapfilm::patch_upkeep(sketch, add, params.search);  // the graph/cycle part alone
+    graph_cpu.push_back(cpu_ms() - c0);
+    auto t0 = clock_type::now();
+    c0 = cpu_ms();
     const SurfaceUpdate up = soapfilm::soapfilm_update(sketch, add, params);
+    upkeep_cpu.push_back(cpu_ms() - c0);
     upkeep.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
     search.push_back(up.stats.at("search_ms"));
+    mesh.push_back(up.stats.at("mesh_ms"));
     walk.push_back(up.stats.at("walk_ms"));
     if (k == 0)
       std::cout << "soapfilm." << curves << ".edit_patches_added " << up.edit.patches_added.size()
                 << " patches\nsoapfilm." << curves << ".edit_patches_removed "
                 << up.edit.patches_removed.size() << " patches\n";
+    const Edit undo_patches = sketch.network.apply(up.edit);
+    sketch.history.done.push_back({"stroke", std::nullopt, {{add, undo}, {up.edit, undo_patches}}});
+
+    Edit del;
+    del.curves_removed = {c.id};
+    const Edit undo_del = sketch.network.apply(del);
+    c0 = cpu_ms();
+    soapfilm::patch_upkeep(sketch, del, params.search);
+    del_graph_cpu.push_back(cpu_ms() - c0);
+    t0 = clock_type::now();
+    const SurfaceUpdate dup = soapfilm::soapfilm_update(sketch, del, params);
+    del_upkeep.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - t0).count());
+    del_search.push_back(dup.stats.at("search_ms"));
+    if (k == 0)
+      std::cout << "soapfilm." << curves << ".delete_patches_added " << dup.edit.patches_added.size()
+                << " patches\n";
+    sketch.network.apply(undo_del);
+    sketch.network.apply(undo_patches);
     sketch.network.apply(undo);
+    sketch.history.done.pop_back();
   }
   const std::string p = "soapfilm." + std::to_string(curves);
+  auto print = [&](const std::string& name, const std::vector<double>& v, const char* unit) {
+    const Distribution d = distribution(v);
+    std::cout << p << "." << name << "_p50 " << d.median << " " << unit << "\n"
+              << p << "." << name << "_p95 " << d.p95 << " " << unit << "\n";
+  };
   std::cout << p << ".curves " << sketch.network.curves().size() << " curves\n"
             << p << ".patches " << patch_count << " patches\n"
-            << p << ".mesh_per_patch_p50 " << distribution(per_patch).median << " ms\n"
-            << p << ".mesh_per_patch_p95 " << distribution(per_patch).p95 << " ms\n"
-            << p << ".upkeep_per_edit_p50 " << distribution(upkeep).median << " ms\n"
-            << p << ".upkeep_per_edit_p95 " << distribution(upkeep).p95 << " ms\n"
-            << p << ".search_per_edit_p50 " << distribution(search).median << " ms\n"
-            << p << ".walks_per_edit_p50 " << distribution(walk).median << " ms\n";
+            << p << ".mesh_border_points " << distribution(border_points).median << " points\n";
+  print("mesh_per_patch", per_patch, "ms");
+  print("mesh_per_patch_cpu", per_patch_cpu, "ms");
+  print("mesh_fill", fill, "ms");
+  print("mesh_remesh", remesh, "ms");
+  print("mesh_smooth", smooth, "ms");
+  print("mesh_output", output, "ms");
+  print("upkeep_per_edit", upkeep, "ms");
+  print("upkeep_meshing_per_edit", mesh, "ms");
+  print("upkeep_graph_cycles_per_edit", search, "ms");
+  print("upkeep_walks_per_edit", walk, "ms");
+  print("upkeep_per_edit_cpu", upkeep_cpu, "ms");
+  print("upkeep_graph_cycles_per_edit_cpu", graph_cpu, "ms");
+  print("delete_upkeep_per_edit", del_upkeep, "ms");
+  print("delete_graph_cycles_per_edit", del_search, "ms");
+  print("delete_graph_cycles_per_edit_cpu", del_graph_cpu, "ms");
 }
 
 }  // namespace

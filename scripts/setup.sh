@@ -14,9 +14,11 @@ packages=(
   libcli11-dev catch2
   # plugins and viewers
   libcgal-dev libopenmesh-dev libnlopt-cxx-dev libtbb-dev
-  libvtk9-dev libopenmpi-dev libopenxr-dev
-  # headless rendering and viewer tests
-  xvfb xauth
+  libvtk9-dev libopenmpi-dev libopenxr-dev libxi-dev
+  # headless rendering and viewer tests (xdotool drives the real window)
+  xvfb xauth xdotool
+  # shared compiler cache between build directories
+  ccache
 )
 
 missing=()

@@ -31,6 +31,10 @@ struct WorkspaceEvent { Workspace workspace; bool operator==(const WorkspaceEven
 struct CorrectionEvent { bool enabled = true; bool operator==(const CorrectionEvent&) const = default; };
 struct AddPatchEvent { Vec3 point = Vec3::Zero(); bool operator==(const AddPatchEvent&) const = default; };
 struct DeletePatchEvent { Vec3 point = Vec3::Zero(); bool operator==(const DeletePatchEvent&) const = default; };
+// Ask the surfacer for a global recompute (Surfacer::recompute): surfacers too
+// slow to follow every stroke (e.g. Hermite RBF) update only on request and at
+// the end of a replay.
+struct RecomputeSurfaceEvent { bool operator==(const RecomputeSurfaceEvent&) const = default; };
 // A curve another system produced for a stroke (e.g. CASSIE's own output),
 // kept for comparison; it does not change the sketch.
 struct ReferenceEvent {
@@ -56,7 +60,7 @@ struct RelationEvent {
 using EventPayload = std::variant<StrokeEvent, UndoEvent, RedoEvent, DeleteNearEvent,
                                   DeleteStrokeEvent, ModeEvent, WorkspaceEvent,
                                   CorrectionEvent, AddPatchEvent, DeletePatchEvent,
-                                  ReferenceEvent, RelationEvent>;
+                                  ReferenceEvent, RelationEvent, RecomputeSurfaceEvent>;
 
 struct Event {
   double time = 0.0;  // seconds since the session started

@@ -12,17 +12,20 @@ namespace sketchlab {
 struct HistoryStep {
   Edit forward;
   Edit inverse;
+  bool operator==(const HistoryStep&) const = default;
 };
 
 struct HistoryEntry {
   std::string action;              // "stroke", "delete", "add_patch", ...
   std::optional<StrokeId> stroke;  // the stroke that caused it, if any
   std::vector<HistoryStep> steps;  // applied in order; undone in reverse
+  bool operator==(const HistoryEntry&) const = default;
 };
 
 struct History {
   std::vector<HistoryEntry> done;
   std::vector<HistoryEntry> undone;  // top = next redo
+  bool operator==(const History&) const = default;
 };
 
 }  // namespace sketchlab

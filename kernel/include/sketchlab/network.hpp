@@ -94,6 +94,11 @@ class Network {
   std::vector<Segment> segments() const;
   std::vector<Segment> segments_of(CurveId curve) const;
 
+  // Patches with at least one boundary piece on `curve`, ascending ids; empty
+  // for an unknown curve or one that bounds no patch. Answered from a map kept
+  // by apply (cost O(log curves + result), not a scan of the patches).
+  std::vector<PatchId> patches_on(CurveId curve) const;
+
   // Proximity queries, answered from a spatial index (not a scan). Results
   // hold every item within distance r (inclusive), sorted by distance, ties by
   // id. Distances are exact (closest point on the curve), r >= 0 in metres.

@@ -8,6 +8,7 @@
 // keep no hidden state between strokes.
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,15 @@ class Session {
 
   StepReport handle(const Event& event);
 
+  // Takes back the last handled event, exactly: afterwards sketch(),
+  // references() and relations() equal those of a session that handled one
+  // event fewer (history, redo stack and id counters included). Stepping
+  // back in a replay is this, so it runs through the inverse edits (an undone
+  // stroke's edits are not recomputed). Returns false when no event is left.
+  bool revert_last();
+  // Events handled and not reverted.
+  std::size_t events_handled() const { return journal_.size(); }
+
   const Sketch& sketch() const { return sketch_; }
   // Reference curves by track then stroke (from ReferenceEvents).
   const std::map<std::string, std::map<StrokeId, Curve>>& references() const { return references_; }
@@ -60,7 +70,31 @@ class Session {
   StepReport remove_curves(const std::vector<CurveId>& curves, const std::string& action,
                            StepReport report);
 
+  // What revert_last() needs to take one event back: the values it
+  // overwrote and the history moves it made (network changes are all in the
+  // history entries, with their inverses).
+  struct Reversal {
+    Workspace workspace;
+    Layer mode = Layer::automatic;
+    bool correction_enabled = true;
+    std::optional<StrokeId> stroke_added;
+    bool committed = false;                  // pushed an entry onto history.done
+    std::vector<HistoryEntry> cleared_redo;  // what that commit cleared
+    enum class Move { none, undo, redo } moved = Move::none;
+    // The moved entry as it was: undoing recomputes its forward edits (and
+    // redoing its inverses), which can differ in form from the originals.
+    std::optional<HistoryEntry> moved_entry;
+    std::optional<std::pair<std::string, StrokeId>> reference;  // track, stroke
+    std::optional<Curve> previous_reference;
+    std::optional<std::string> relation_track;
+  };
+  static void undo_entry(Network& network, HistoryEntry& entry, StepReport* report);
+  static void redo_entry(Network& network, HistoryEntry& entry, StepReport* report);
+
   Sketch sketch_;
+  std::vector<Reversal> journal_;  // one per handled event
+  std::vector<HistoryEntry> last_cleared_;
+  bool last_committed_ = false;
   std::shared_ptr<Corrector> corrector_;
   std::shared_ptr<Surfacer> surfacer_;
   PreprocessParams fallback_;

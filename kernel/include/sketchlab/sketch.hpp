@@ -19,6 +19,7 @@ struct Sketch {
   History history;
   bool correction_enabled = true;
   Layer mode = Layer::automatic;  // current drawing mode (strokes may override)
+  bool operator==(const Sketch&) const = default;
 };
 
 // Ids of the curves in the network that came from `stroke`, ascending.

@@ -30,6 +30,10 @@ struct Stroke {
   bool is_2d() const { return view.has_value() && samples_are_pixels; }
   // True when positions are pixels of `view` (2D input); false for VR input.
   bool samples_are_pixels = false;
+  // 2D input only: the world plane {x : n·x = d}, stored (n, d) with |n| = 1,
+  // the user drew on. Correctors working in world space get the stroke lifted
+  // onto it (draw_plane.hpp); 2D-native ones get the pixels as they are.
+  std::optional<Vec4> draw_plane;
 
   bool operator==(const Stroke&) const = default;
 };

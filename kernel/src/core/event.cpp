@@ -9,7 +9,7 @@ std::string_view event_type_name(const EventPayload& payload) {
   static constexpr std::array<std::string_view, std::variant_size_v<EventPayload>> names{
       "stroke",     "undo",      "redo",      "delete_near",  "delete_stroke", "mode",
       "workspace",  "correction", "add_patch", "delete_patch", "reference",
-      "relation",
+      "relation",   "recompute_surface",
   };
   return names[payload.index()];
 }

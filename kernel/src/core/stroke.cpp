@@ -62,6 +62,12 @@ std::string validate(const Stroke& stroke) {
   if (stroke.samples_are_pixels && !stroke.view) {
     return who + " is a 2D stroke (pixel samples) without a view";
   }
+  if (stroke.draw_plane) {
+    const Vec4& p = *stroke.draw_plane;
+    if (!p.allFinite() || std::abs(p.head<3>().norm() - 1.0) > 1e-6)
+      return who + " has a draw plane that is not finite or whose normal is not unit length";
+    if (!stroke.samples_are_pixels) return who + " has a draw plane but no pixel samples";
+  }
   if (!std::isfinite(stroke.workspace_scale) || stroke.workspace_scale <= 0.0) {
     return who + " has workspace scale " + std::to_string(stroke.workspace_scale) +
            "; it must be finite and > 0";

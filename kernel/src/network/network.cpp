@@ -79,6 +79,12 @@ bool Network::operator==(const Network& other) const {
          patches_ == other.patches_;
 }
 
+std::vector<PatchId> Network::patches_on(CurveId curve) const {
+  auto it = patches_on_curve_.find(curve);
+  if (it == patches_on_curve_.end()) return {};
+  return {it->second.begin(), it->second.end()};
+}
+
 void Network::put_curve(const NetworkCurve& curve) { curves_[curve.id] = curve; }
 
 void Network::erase_curve(CurveId id) { curves_.erase(id); }

@@ -135,9 +135,10 @@ ojson mat4_json(const Mat4& m) {
   return rows;
 }
 
-constexpr std::array<const char*, 12> type_names{
+constexpr std::array<const char*, 13> type_names{
     "stroke",    "undo",       "redo",      "delete_near",  "delete_stroke", "mode",
-    "workspace", "correction", "add_patch", "delete_patch", "reference",     "relation"};
+    "workspace", "correction", "add_patch", "delete_patch", "reference",     "relation",
+    "recompute_surface"};
 
 std::string allowed_types() {
   std::string s;
@@ -147,7 +148,7 @@ std::string allowed_types() {
 
 Stroke stroke_from_json(const json& j) {
   const std::string what = "stroke event";
-  check_object(j, what, {"t", "type", "id", "layer", "workspace_scale", "pixels", "view", "samples"});
+  check_object(j, what, {"t", "type", "id", "layer", "workspace_scale", "pixels", "view", "draw_plane", "samples"});
   Stroke s;
   s.id = unsigned_integer(field(j, "id", what), "id");
   s.layer = layer(field(j, "layer", what), "layer");
@@ -156,6 +157,15 @@ Stroke stroke_from_json(const json& j) {
     s.samples_are_pixels = boolean(j["pixels"], "pixels");
   }
   if (j.contains("view")) s.view = view_from_json(j["view"], "view");
+  if (j.contains("draw_plane")) {
+    const json& p = array(j["draw_plane"], "draw_plane");
+    if (p.size() != 4) fail("field 'draw_plane' must have 4 numbers [nx,ny,nz,d]");
+    Vec4 plane;
+    for (std::size_t k = 0; k < 4; ++k)
+      plane[static_cast<int>(k)] =
+          number(p[k], "draw_plane[" + std::to_string(k) + "]", max_coordinate);
+    s.draw_plane = plane;
+  }
   const json& samples = array(field(j, "samples", what), "samples");
   s.samples.reserve(samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -293,6 +303,10 @@ ojson to_json(const Stroke& s) {
   j["workspace_scale"] = s.workspace_scale;
   if (s.samples_are_pixels) j["pixels"] = true;
   if (s.view) j["view"] = to_json(*s.view);
+  if (s.draw_plane) {
+    const Vec4& p = *s.draw_plane;
+    j["draw_plane"] = ojson::array({p[0], p[1], p[2], p[3]});
+  }
   ojson samples = ojson::array();
   for (const Sample& smp : s.samples) {
     ojson a = ojson::array({smp.position.x(), smp.position.y(), smp.position.z(), smp.time, smp.pressure});
@@ -384,6 +398,9 @@ Event event_from_json(const json& j) {
   } else if (type == "delete_patch") {
     check_object(j, what, {"t", "type", "point"});
     e.payload = DeletePatchEvent{vec3(field(j, "point", what), "point")};
+  } else if (type == "recompute_surface") {
+    check_object(j, what, {"t", "type"});
+    e.payload = RecomputeSurfaceEvent{};
   } else if (type == "reference") {
     check_object(j, what, {"t", "type", "stroke", "track", "curve"});
     ReferenceEvent r;

@@ -50,6 +50,15 @@ ReplayResult replay(Input& input, const StackInstance& stack) {
   if (auto error = input.error(); !error.empty())
     throw std::runtime_error("input failed after " + std::to_string(result.steps.size()) +
                              " events: " + error);
+  // Global surfacers (Surfacer::recompute) build their surface once, here; the
+  // step is reported only when it did something, so surfacers that keep up
+  // stroke by stroke leave the steps unchanged.
+  if (stack.surfacer) {
+    const double end = result.steps.empty() ? 0.0 : result.steps.back().time;
+    StepReport last = result.session.handle(Event{end, RecomputeSurfaceEvent{}});
+    if (last.patches_added + last.patches_removed > 0 || !last.error.empty())
+      result.steps.push_back(std::move(last));
+  }
   return result;
 }
 

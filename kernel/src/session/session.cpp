@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sketchlab/draw_plane.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 
 namespace sketchlab {
@@ -82,7 +83,23 @@ void Session::apply_surfacer(const SurfaceUpdate& update, HistoryEntry& entry, S
 void Session::commit(HistoryEntry entry) {
   if (entry.steps.empty()) return;
   sketch_.history.done.push_back(std::move(entry));
+  last_cleared_ = std::move(sketch_.history.undone);
   sketch_.history.undone.clear();
+  last_committed_ = true;
+}
+
+void Session::undo_entry(Network& network, HistoryEntry& entry, StepReport* report) {
+  for (auto it = entry.steps.rbegin(); it != entry.steps.rend(); ++it) {
+    if (report) count_edit(it->inverse, *report);
+    it->forward = network.apply(it->inverse);
+  }
+}
+
+void Session::redo_entry(Network& network, HistoryEntry& entry, StepReport* report) {
+  for (auto& step : entry.steps) {
+    if (report) count_edit(step.forward, *report);
+    step.inverse = network.apply(step.forward);
+  }
 }
 
 StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
@@ -101,9 +118,19 @@ StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
 
   HistoryEntry entry{"stroke", stroke.id, {}};
   const auto start = std::chrono::steady_clock::now();
+  // The sketch keeps the stroke as recorded; world-space fitting gets a 2D
+  // stroke drawn on a plane lifted onto it.
+  std::string lift_error;
+  const bool pixels_wanted =
+      sketch_.correction_enabled && corrector_->stroke_space() == StrokeSpace::pixels;
+  const Stroke world = pixels_wanted ? stroke : lift_to_draw_plane(stroke, lift_error);
+  if (!lift_error.empty()) {
+    report.error = lift_error;
+    return report;
+  }
   Edit edit;
   if (sketch_.correction_enabled) {
-    Correction c = corrector_->correct(stroke, sketch_);
+    Correction c = corrector_->correct(world, sketch_);
     report.corrected = true;
     report.stats = std::move(c.stats);
     report.constraints = std::move(c.constraints);
@@ -114,7 +141,7 @@ StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
     edit = std::move(c.edit);
   } else {
     try {
-      edit = freehand_edit(stroke, sketch_, fallback_);
+      edit = freehand_edit(world, sketch_, fallback_);
     } catch (const std::exception& e) {
       report.error = e.what();
       return report;
@@ -164,26 +191,24 @@ StepReport Session::handle(const Event& event) {
   StepReport report;
   report.event = std::string(event_type_name(event.payload));
   report.time = event.time;
+  Reversal reversal{sketch_.workspace, sketch_.mode, sketch_.correction_enabled};
+  const std::size_t strokes_before = sketch_.strokes.size();
+  last_committed_ = false;
   auto undo_redo = [&](std::vector<HistoryEntry>& from, std::vector<HistoryEntry>& to, bool undo) {
     if (from.empty()) {
       report.error = undo ? "nothing to undo" : "nothing to redo";
       return;
     }
+    reversal.moved_entry = from.back();
     HistoryEntry entry = std::move(from.back());
     from.pop_back();
-    if (undo) {
-      for (auto it = entry.steps.rbegin(); it != entry.steps.rend(); ++it) {
-        count_edit(it->inverse, report);
-        it->forward = sketch_.network.apply(it->inverse);
-      }
-    } else {
-      for (auto& step : entry.steps) {
-        count_edit(step.forward, report);
-        step.inverse = sketch_.network.apply(step.forward);
-      }
-    }
+    if (undo)
+      undo_entry(sketch_.network, entry, &report);
+    else
+      redo_entry(sketch_.network, entry, &report);
     report.stroke = entry.stroke;
     to.push_back(std::move(entry));
+    reversal.moved = undo ? Reversal::Move::undo : Reversal::Move::redo;
   };
 
   std::visit(
@@ -211,11 +236,80 @@ StepReport Session::handle(const Event& event) {
           [&](const CorrectionEvent& e) { sketch_.correction_enabled = e.enabled; },
           [&](const AddPatchEvent& e) { surfacer_command(e, "add_patch", report); },
           [&](const DeletePatchEvent& e) { surfacer_command(e, "delete_patch", report); },
-          [&](const ReferenceEvent& e) { references_[e.track][e.stroke] = e.curve; },
-          [&](const RelationEvent& e) { relations_[e.track].push_back(e); },
+          [&](const RecomputeSurfaceEvent&) {
+            if (!surfacer_) {
+              report.error = "recompute_surface: this stack has no surfacer";
+              return;
+            }
+            HistoryEntry entry{"recompute_surface", std::nullopt, {}};
+            const auto start = std::chrono::steady_clock::now();
+            const SurfaceUpdate update = surfacer_->recompute(sketch_);
+            report.latency_ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            // The surfacer's figures (constraints, residuals, times) travel with the step.
+            for (const auto& [name, value] : update.stats) report.stats.extra["surfacer." + name] = value;
+            apply_surfacer(update, entry, report);
+            commit(std::move(entry));
+          },
+          [&](const ReferenceEvent& e) {
+            auto& slot = references_[e.track];
+            reversal.reference = {e.track, e.stroke};
+            if (auto it = slot.find(e.stroke); it != slot.end()) reversal.previous_reference = it->second;
+            slot[e.stroke] = e.curve;
+          },
+          [&](const RelationEvent& e) {
+            relations_[e.track].push_back(e);
+            reversal.relation_track = e.track;
+          },
       },
       event.payload);
+  if (sketch_.strokes.size() != strokes_before) reversal.stroke_added = report.stroke;
+  if (last_committed_) {
+    reversal.committed = true;
+    reversal.cleared_redo = std::move(last_cleared_);
+  }
+  last_cleared_.clear();
+  journal_.push_back(std::move(reversal));
   return report;
+}
+
+bool Session::revert_last() {
+  if (journal_.empty()) return false;
+  Reversal r = std::move(journal_.back());
+  journal_.pop_back();
+  auto& history = sketch_.history;
+  if (r.committed) {
+    undo_entry(sketch_.network, history.done.back(), nullptr);
+    history.done.pop_back();
+    history.undone = std::move(r.cleared_redo);
+  }
+  if (r.moved == Reversal::Move::undo) {
+    redo_entry(sketch_.network, history.undone.back(), nullptr);
+    history.undone.pop_back();
+    history.done.push_back(std::move(*r.moved_entry));
+  } else if (r.moved == Reversal::Move::redo) {
+    undo_entry(sketch_.network, history.done.back(), nullptr);
+    history.done.pop_back();
+    history.undone.push_back(std::move(*r.moved_entry));
+  }
+  if (r.stroke_added) sketch_.strokes.erase(*r.stroke_added);
+  if (r.reference) {
+    auto& slot = references_[r.reference->first];
+    if (r.previous_reference)
+      slot[r.reference->second] = std::move(*r.previous_reference);
+    else
+      slot.erase(r.reference->second);
+    if (slot.empty()) references_.erase(r.reference->first);
+  }
+  if (r.relation_track) {
+    auto& list = relations_[*r.relation_track];
+    list.pop_back();
+    if (list.empty()) relations_.erase(*r.relation_track);
+  }
+  sketch_.workspace = r.workspace;
+  sketch_.mode = r.mode;
+  sketch_.correction_enabled = r.correction_enabled;
+  return true;
 }
 
 }  // namespace sketchlab

@@ -9,6 +9,7 @@
 
 #include "models.hpp"
 #include "relations.hpp"
+#include "sketchlab/draw_plane.hpp"
 
 namespace sketchlab::synthetic {
 namespace {
@@ -73,6 +74,8 @@ Recording synthesize_session(const SynthesisParams& p) {
   };
   const View head = vr_head_view();
   const View camera = tablet_view(plan);
+  const Vec4 view_plane =
+      plane_through(model_center, (eye_position(camera) - model_center).normalized());
   const NoiseModel noise = scaled(vr ? p.vr_noise : p.tablet_noise, p.noise);
   const MotionModel& motion = vr ? p.vr_motion : p.tablet_motion;
 
@@ -92,6 +95,9 @@ Recording synthesize_session(const SynthesisParams& p) {
       s.samples = synthesize_tablet_stroke(gc.curve, camera, noise, motion, time, rng);
       s.view = camera;
       s.samples_are_pixels = true;
+      // The view plane through the model centre, the desktop viewer's default
+      // draw plane: world-space correctors get the stroke lifted onto it.
+      s.draw_plane = view_plane;
     }
     const double end = s.samples.back().time;
     rec.events.push_back({end, StrokeEvent{std::move(s)}});

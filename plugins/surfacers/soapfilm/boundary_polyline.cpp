@@ -54,12 +54,25 @@ BoundaryPolyline boundary_polyline(const Network& network, const std::vector<Ori
   }
   if (!(total > 0.0) || !std::isfinite(total)) throw std::invalid_argument("boundary: zero length cycle");
   BoundaryPolyline out;
+  auto points_of = [](double length, double step) {
+    return std::max(1, static_cast<int>(std::ceil(length / step - 1e-9)));
+  };
+  auto count = [&](double step) {
+    int n = 0;
+    for (const auto& s : lengths) n += points_of(s.back(), step);
+    return n;
+  };
   out.spacing = std::max(spacing, total / std::max(3, max_points));
+  // Rounding up per piece can exceed the cap by up to one point per piece:
+  // widen the spacing until it holds (a cycle with more pieces than the cap
+  // keeps one point per piece).
+  for (int i = 0; i < 200 && count(out.spacing) > std::max(max_points, static_cast<int>(boundary.size())); ++i)
+    out.spacing *= 1.02;
   for (std::size_t k = 0; k < boundary.size(); ++k) {
     const Curve& c = network.find_curve(boundary[k].curve)->curve;
     const auto& t = params[k];
     const auto& s = lengths[k];
-    const int n = std::max(1, static_cast<int>(std::ceil(s.back() / out.spacing - 1e-9)));
+    const int n = points_of(s.back(), out.spacing);
     // Points 0..n-1 of this piece (its end is the next piece's start).
     std::size_t j = 0;
     for (int i = 0; i < n; ++i) {

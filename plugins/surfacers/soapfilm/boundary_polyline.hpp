@@ -14,7 +14,7 @@ struct BoundaryPolyline {
 };
 
 // `spacing`: wanted distance between samples (m); raised so that at most
-// `max_points` points are used. Throws std::invalid_argument if a piece
+// max(`max_points`, pieces) points are used. Throws std::invalid_argument if a piece
 // references a missing curve or the boundary has no length.
 BoundaryPolyline boundary_polyline(const Network& network, const std::vector<OrientedSegment>& boundary,
                                    double spacing, int max_points);

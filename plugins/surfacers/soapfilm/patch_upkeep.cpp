@@ -15,19 +15,36 @@ std::vector<OrientedSegment> to_boundary(const CurveGraph& graph, const Cycle& c
 
 // Nodes that had an incidence on one of `removed` curves: every node
 // incidence was created by some applied edit, so the edits in the history
-// (and the current one) name them all.
+// (and the current one) name them all. The history is read backwards and
+// only as far back as the edit that added each removed curve (incidences on
+// a curve are never older than the curve), so the cost follows the age of
+// the deleted curves, not the size of the sketch.
 std::set<NodeId> nodes_touched_by(const Sketch& sketch, const Edit& last,
                                   const std::set<CurveId>& removed) {
   std::set<NodeId> out;
+  std::set<CurveId> open = removed;  // curves whose adding edit is not reached yet
   auto scan = [&](const Edit& e) {
     for (const auto* list : {&e.nodes_added, &e.nodes_replaced})
       for (const Node& n : *list)
         for (const NodeIncidence& inc : n.incidences)
           if (removed.count(inc.curve)) out.insert(n.id);
   };
-  for (const HistoryEntry& entry : sketch.history.done)
-    for (const HistoryStep& step : entry.steps) scan(step.forward);
   scan(last);
+  const auto& done = sketch.history.done;
+  for (auto entry = done.rbegin(); entry != done.rend() && !open.empty(); ++entry)
+    for (auto step = entry->steps.rbegin(); step != entry->steps.rend(); ++step) {
+      scan(step->forward);
+      for (const NetworkCurve& c : step->forward.curves_added) open.erase(c.id);
+    }
+  return out;
+}
+
+// Patches with a boundary piece on one of `curves`, ascending ids, from the
+// kernel's curve -> patches map (no scan of the patch list).
+std::set<PatchId> patches_on_any(const Network& net, const std::set<CurveId>& curves) {
+  std::set<PatchId> out;
+  for (CurveId c : curves)
+    for (PatchId p : net.patches_on(c)) out.insert(p);
   return out;
 }
 
@@ -127,7 +144,10 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
 
   // Cycles possibly crossed, and patches on replaced curves (stale geometry).
   std::set<PatchId> removed_patches;
-  for (const auto& [id, patch] : net.patches()) {
+  std::set<CurveId> touched = replaced;
+  touched.insert(split_curves.begin(), split_curves.end());
+  for (PatchId id : patches_on_any(net, touched)) {
+    const Patch& patch = net.patches().at(id);
     bool on_replaced = false, on_split = false;
     for (const OrientedSegment& piece : patch.boundary) {
       on_replaced = on_replaced || replaced.count(piece.curve);
@@ -179,11 +199,9 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - walk_start).count();
   std::set<std::vector<int>> existing;
   std::map<int, int> automatic_count;
-  for (const auto& [id, patch] : net.patches()) {
+  for (PatchId id : patches_on_any(net, reached)) {
     if (removed_patches.count(id)) continue;
-    bool near = false;
-    for (const OrientedSegment& piece : patch.boundary) near = near || reached.count(piece.curve);
-    if (!near) continue;
+    const Patch& patch = net.patches().at(id);
     std::vector<int> key = boundary_key(graph, patch.boundary);
     if (patch.automatic)
       for (int s : key) ++automatic_count[s];

@@ -13,6 +13,11 @@
 //  - local cycle searches from both ends of each new segment; duplicates of
 //    existing or already found cycles are rejected, and so are cycles using a
 //    segment that already bounds two automatic patches (thesis §3.3.2.2).
+// The cost is local: the graph (CurveGraph) is built lazily for the curves the
+// seeds and walks reach, and the patches on a curve come from the kernel's
+// Network::patches_on, so neither the curve list nor the patch list is
+// scanned (only a deletion reads the history, back to the deleted curves'
+// creation).
 #include <map>
 #include <string>
 #include <vector>

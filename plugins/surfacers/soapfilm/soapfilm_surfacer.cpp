@@ -15,7 +15,7 @@ namespace sketchlab::soapfilm {
 
 std::optional<Patch> make_patch(const Network& network, PatchId id,
                                 const std::vector<OrientedSegment>& boundary, bool automatic,
-                                const SoapfilmParams& params) {
+                                const SoapfilmParams& params, PatchMeshTimings* timings) {
   try {
     const BoundaryPolyline poly =
         boundary_polyline(network, boundary, params.edge_length, params.max_boundary_points);
@@ -23,7 +23,7 @@ std::optional<Patch> make_patch(const Network& network, PatchId id,
     patch.id = id;
     patch.boundary = boundary;
     patch.automatic = automatic;
-    patch.mesh = patch_mesh(poly.points, poly.spacing, params.mesh);
+    patch.mesh = patch_mesh(poly.points, poly.spacing, params.mesh, timings);
     return patch;
   } catch (const std::exception&) {
     return std::nullopt;
@@ -39,8 +39,14 @@ SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const Soap
   out.edit.patches_removed = up.patches_removed;
   PatchId next = sketch.network.next_patch_id();
   int failed = 0;
+  PatchMeshTimings stages;  // summed over the patches (CPU ms)
   for (const auto& cycle : up.cycles_added) {
-    if (auto patch = make_patch(sketch.network, next, cycle, true, params)) {
+    PatchMeshTimings t;
+    auto patch = make_patch(sketch.network, next, cycle, true, params, &t);
+    stages.fill_ms += t.fill_ms;
+    stages.remesh_ms += t.remesh_ms;
+    stages.smooth_ms += t.smooth_ms;
+    if (patch) {
       out.edit.patches_added.push_back(std::move(*patch));
       ++next;
     } else {
@@ -59,6 +65,9 @@ SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const Soap
   out.stats["search_ms"] = search_ms;
   out.stats["walk_ms"] = up.walk_ms;
   out.stats["mesh_ms"] = mesh_ms;
+  out.stats["mesh_fill_cpu_ms"] = stages.fill_ms;
+  out.stats["mesh_remesh_cpu_ms"] = stages.remesh_ms;
+  out.stats["mesh_smooth_cpu_ms"] = stages.smooth_ms;
   if (!up.cycles_added.empty())
     out.stats["ms_per_patch"] = mesh_ms / static_cast<double>(up.cycles_added.size());
   return out;
@@ -76,8 +85,9 @@ SurfaceUpdate soapfilm_command(const Sketch& sketch, const SurfaceCommand& comma
     }
     CurveGraph graph(net);
     const std::vector<int> key = boundary_key(graph, *cycle);
-    for (const auto& [id, patch] : net.patches())
-      if (boundary_key(graph, patch.boundary) == key) {
+    // A patch over the same cycle bounds the cycle's first curve.
+    for (PatchId id : net.patches_on(cycle->front().curve))
+      if (boundary_key(graph, net.patches().at(id).boundary) == key) {
         out.error = "add_patch: patch " + std::to_string(id) + " already bounds that cycle";
         return out;
       }

@@ -13,8 +13,9 @@ SurfaceUpdate soapfilm_command(const Sketch& sketch, const SurfaceCommand& comma
                                const SoapfilmParams& params);
 
 // A patch (id, boundary, mesh) for a cycle; nullopt if meshing fails.
+// `timings`, when given, receives the meshing stages' CPU times.
 std::optional<Patch> make_patch(const Network& network, PatchId id,
                                 const std::vector<OrientedSegment>& boundary, bool automatic,
-                                const SoapfilmParams& params);
+                                const SoapfilmParams& params, PatchMeshTimings* timings = nullptr);
 
 }  // namespace sketchlab::soapfilm

@@ -50,4 +50,5 @@ TEST_CASE("event type names follow the payload alternative", "[event]") {
   CHECK(event_type_name(AddPatchEvent{}) == "add_patch");
   CHECK(event_type_name(DeletePatchEvent{}) == "delete_patch");
   CHECK(event_type_name(ReferenceEvent{}) == "reference");
+  CHECK(event_type_name(RecomputeSurfaceEvent{}) == "recompute_surface");
 }

@@ -31,11 +31,18 @@ struct Correction {
   std::string error;
 };
 
+// Which strokes a corrector wants. `world`: 3D strokes in workspace metres; a
+// 2D stroke with a draw plane arrives lifted onto it (draw_plane.hpp).
+// `pixels`: 2D-native correctors (analytic drawing, JustDrawIt) get 2D
+// strokes as recorded, pixels plus View (and the draw plane, if any).
+enum class StrokeSpace { world, pixels };
+
 class Corrector {
  public:
   virtual ~Corrector() = default;
   // `stroke` passed validate(); for 2D strokes stroke.view is set.
   virtual Correction correct(const Stroke& stroke, const Sketch& sketch) = 0;
+  virtual StrokeSpace stroke_space() const { return StrokeSpace::world; }
 };
 
 }  // namespace sketchlab

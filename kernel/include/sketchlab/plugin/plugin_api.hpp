@@ -31,7 +31,9 @@
 namespace sketchlab {
 
 // Bumped whenever any type crossing the plugin boundary changes layout.
-inline constexpr std::uint32_t plugin_abi_version = 1;
+// 2: Surfacer::recompute and RecomputeSurfaceEvent.
+// 3: Stroke::draw_plane and Corrector::stroke_space.
+inline constexpr std::uint32_t plugin_abi_version = 3;
 
 enum class PluginKind { corrector, surfacer, input };
 std::string_view to_string(PluginKind kind);
@@ -93,6 +95,9 @@ class GuardedSurfacer final : public T {
   SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) override {
     return guarded([&] { return T::command(sketch, command); }, SurfaceUpdate{},
                    &SurfaceUpdate::error);
+  }
+  SurfaceUpdate recompute(const Sketch& sketch) override {
+    return guarded([&] { return T::recompute(sketch); }, SurfaceUpdate{}, &SurfaceUpdate::error);
   }
 };
 

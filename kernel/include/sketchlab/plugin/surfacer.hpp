@@ -27,6 +27,14 @@ class Surfacer {
   // Called after `last` was applied to sketch.network.
   virtual SurfaceUpdate update(const Sketch& sketch, const Edit& last) = 0;
   virtual SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) = 0;
+  // A global recompute from the whole sketch, asked for by a
+  // RecomputeSurfaceEvent and once more at the end of a replay (run/stack.hpp).
+  // Surfacers that keep up in update() need nothing here: the default is an
+  // empty update.
+  virtual SurfaceUpdate recompute(const Sketch& sketch) {
+    (void)sketch;
+    return {};
+  }
 };
 
 }  // namespace sketchlab

@@ -32,7 +32,9 @@ struct ReplayResult {
   std::string stack;
   RecordingHeader header;
   Session session;
-  std::vector<StepReport> steps;  // one per event
+  // One per event, plus a last "recompute_surface" step when the surfacer's
+  // final Surfacer::recompute changed patches or failed.
+  std::vector<StepReport> steps;
 };
 
 // Folds every event of `input` through a new session on `stack`. Throws

@@ -98,13 +98,18 @@ TEST_CASE("record and synth write the same file through the plugin", "[synthetic
 
 TEST_CASE("the bundled synthetic recordings regenerate byte for byte", "[synthetic][cli][data]") {
   const auto dir = scratch_dir();
-  for (const std::string model : {"cube", "mug"}) {
-    INFO(model);
-    const std::filesystem::path bundled = sketchlab::test::source_path("data/synthetic/" + model + ".jsonl");
-    REQUIRE(std::filesystem::exists(bundled));
-    CHECK(std::filesystem::file_size(bundled) < 1000000);
-    const auto out = dir / (model + ".jsonl");
-    REQUIRE(run_cli("synth " + model + " --modality vr --seed 1 -o \"" + out.string() + "\" --overwrite") == 0);
-    CHECK(slurp(out) == slurp(bundled));
+  // data/synthetic/*.jsonl are VR sessions, data/synthetic/tablet/*.jsonl 2D ones.
+  for (const std::string modality : {"vr", "tablet"}) {
+    for (const std::string model : {"cube", "mug"}) {
+      const std::string name = (modality == "vr" ? "" : modality + "/") + model + ".jsonl";
+      INFO(name);
+      const std::filesystem::path bundled = sketchlab::test::source_path("data/synthetic/" + name);
+      REQUIRE(std::filesystem::exists(bundled));
+      CHECK(std::filesystem::file_size(bundled) < 1000000);
+      const auto out = dir / (modality + "_" + model + ".jsonl");
+      REQUIRE(run_cli("synth " + model + " --modality " + modality + " --seed 1 -o \"" +
+                      out.string() + "\" --overwrite") == 0);
+      CHECK(slurp(out) == slurp(bundled));
+    }
   }
 }

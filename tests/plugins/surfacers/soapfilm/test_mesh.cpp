@@ -53,8 +53,11 @@ TEST_CASE("patch meshes are manifold disks bordered by the cycle", "[soapfilm]")
     for (const Vec3& v : m.vertices) CHECK(v.allFinite());
     // The border vertices come first, in cycle order, and lie on the curves.
     const std::size_t nb = border_vertex_count(m);
-    const auto poly = soapfilm::boundary_polyline(net, p.boundary, 0.01, 160);
+    const soapfilm::SoapfilmParams defaults;
+    const auto poly = soapfilm::boundary_polyline(net, p.boundary, defaults.edge_length,
+                                                  defaults.max_boundary_points);
     REQUIRE(nb == poly.points.size());
+    CHECK(nb <= static_cast<std::size_t>(defaults.max_boundary_points));
     for (std::size_t i = 0; i < nb; ++i) CHECK((m.vertices[i] - poly.points[i]).norm() == 0.0);
     CHECK(border_offset(net, p, nb) < 1e-9);
     // Every cycle node is a border vertex.

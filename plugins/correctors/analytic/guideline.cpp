@@ -1,0 +1,164 @@
+#include "guideline.hpp"
+
+#include <cmath>
+
+namespace sketchlab::analytic {
+
+namespace {
+
+double border_distance(const Camera& cam, const Vec2& q) {
+  const Vec4& vp = cam.view().viewport;
+  return std::min({q.x() - vp[0], vp[0] + vp[2] - q.x(), q.y() - vp[1], vp[1] + vp[3] - q.y()});
+}
+
+bool on_screen(const Camera& cam, const Vec2& q) { return border_distance(cam, q) >= 0; }
+
+}  // namespace
+
+std::vector<Vec3> known_points_near(const Scaffold& s, const Camera& cam, const Vec2& pixel, double radius) {
+  std::vector<std::pair<double, Vec3>> found;
+  for (const ScaffoldVertex& v : s.vertices) {
+    const auto q = cam.project(v.p);
+    if (q && (*q - pixel).norm() <= radius) found.push_back({(*q - pixel).norm(), v.p});
+  }
+  for (std::size_t i = 0; i < s.lines.size(); ++i)
+    for (std::size_t j = i + 1; j < s.lines.size(); ++j) {
+      const ScaffoldLine& a = s.lines[i];
+      const ScaffoldLine& b = s.lines[j];
+      const LineLineHit h = closest_line_line(a.a, a.direction(), b.a, b.direction());
+      if (h.parallel || h.distance > s.tolerance) continue;
+      if (!a.guide && (h.s < -s.tolerance || h.s > (a.b - a.a).norm() + s.tolerance)) continue;
+      if (!b.guide && (h.t < -s.tolerance || h.t > (b.b - b.a).norm() + s.tolerance)) continue;
+      const Vec3 x = a.a + h.s * a.direction();
+      const auto q = cam.project(x);
+      if (q && (*q - pixel).norm() <= radius) found.push_back({(*q - pixel).norm(), x});
+    }
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Vec3> out;
+  for (const auto& f : found) out.push_back(f.second);
+  return out;
+}
+
+std::optional<Guideline> detect_guideline(const Scaffold& s, const Camera& cam, const Stroke2d& stroke,
+                                          const AnalyticParams& p, bool forced) {
+  if (stroke.points.size() < 2) return std::nullopt;
+  const Vec2 a = stroke.points.front(), b = stroke.points.back();
+  const double chord = (b - a).norm();
+  if (!(chord > 0)) return std::nullopt;
+  const double dev = chord_deviation(stroke.points);
+  if (dev > p.straightness * chord || dev > p.delta_max * cam.dpi()) return std::nullopt;
+  const std::vector<Vec3> starts =
+      known_points_near(s, cam, a, p.collect_factor * stroke.delta.front());
+  if (starts.empty()) return std::nullopt;
+  const Vec3 origin = starts.front();
+  const auto o2 = cam.project(origin);
+  if (!o2) return std::nullopt;
+  const Vec2 sdir = (b - *o2).normalized();
+  const double end_radius = p.collect_factor * stroke.delta.back();
+  std::optional<Guideline> best;
+  double best_angle = p.guideline_angle;
+  auto test = [&](const Vec3& d3, bool image_parallel) {
+    const auto vp = cam.vanishing_point(d3);
+    Vec2 dir2;
+    if (vp) {
+      dir2 = (*vp - *o2);
+    } else {
+      const auto q = cam.project(origin + 1e-3 * s.extent * d3);
+      if (!q) return;
+      dir2 = *q - *o2;
+    }
+    if (!(dir2.norm() > 1e-9)) return;
+    dir2.normalize();
+    double c = dir2.dot(sdir);
+    Vec3 oriented = d3;
+    if (c < 0) {
+      // Toward the vanishing point only (the stroke runs from the known
+      // point to it); at infinity both senses are the same point.
+      if (vp && on_screen(cam, *vp)) return;
+      c = -c;
+      oriented = -d3;
+    }
+    const double angle = std::acos(std::min(1.0, c));
+    if (angle > best_angle) return;
+    if (!forced) {
+      const bool reaches_vp = vp && on_screen(cam, *vp) && (b - *vp).norm() <= end_radius;
+      const bool reaches_edge = (!vp || !on_screen(cam, *vp)) && border_distance(cam, b) <= end_radius;
+      if (!reaches_vp && !reaches_edge) return;
+    }
+    // A guideline toward an on-screen vanishing point points at it.
+    if (vp && on_screen(cam, *vp)) {
+      const auto q = cam.project(origin + 1e-3 * s.extent * oriented);
+      if (q && (*q - *o2).dot(*vp - *o2) < 0) oriented = -oriented;
+    }
+    best_angle = angle;
+    best = Guideline{origin, oriented.normalized(), image_parallel};
+  };
+  for (const Vec3& d : s.vanishing) test(d, false);
+  if (!best) {
+    test(cam.right(), true);
+    test(cam.up(), true);
+  }
+  return best;
+}
+
+std::vector<TickTransfer> detect_tick(const Scaffold& s, const Camera& cam, const Stroke2d& stroke,
+                                      const AnalyticParams& p) {
+  std::vector<TickTransfer> out;
+  if (stroke.points.size() < 2 || stroke.length > p.tick_length * cam.dpi()) return out;
+  const Vec2 a = stroke.points.front(), b = stroke.points.back();
+  // The guideline the tick crosses: its 2D projection separates a and b.
+  int guide = -1;
+  Vec2 cross = Vec2::Zero();
+  double best = 1e300;
+  for (std::size_t i = 0; i < s.lines.size(); ++i) {
+    const ScaffoldLine& l = s.lines[i];
+    if (!l.guide) continue;
+    const auto p0 = cam.project(l.a);
+    const auto p1 = cam.project(l.b);
+    if (!p0 || !p1) continue;
+    const Vec2 d = *p1 - *p0;
+    auto side = [&](const Vec2& q) { return d.x() * (q.y() - p0->y()) - d.y() * (q.x() - p0->x()); };
+    const double sa = side(a), sb = side(b);
+    if (sa * sb > 0) continue;
+    const double t = sa / (sa - sb);
+    const Vec2 x = a + t * (b - a);
+    const double along = (x - *p0).dot(d) / d.squaredNorm();
+    if (along < 0 || along > 1) continue;
+    const double mid = std::abs(t - 0.5);
+    if (mid < best) {
+      best = mid;
+      guide = static_cast<int>(i);
+      cross = x;
+    }
+  }
+  if (guide < 0) return out;
+  const ScaffoldLine& g = s.lines[static_cast<std::size_t>(guide)];
+  const Ray ray = cam.ray(cross);
+  const LineLineHit h = closest_line_line(g.a, g.direction(), ray.origin, ray.direction);
+  Vec3 x = g.a + h.s * g.direction();
+  // Snap to nearby scaffold points on the guideline (§2.3).
+  for (const Vec3& k : known_points_near(s, cam, cross, p.collect_factor * p.delta_min * cam.dpi())) {
+    const double t = (k - g.a).dot(g.direction());
+    if ((g.a + t * g.direction() - k).norm() <= s.tolerance) {
+      x = k;
+      break;
+    }
+  }
+  out.push_back({guide, x});
+  // Transfer the distance A from each intersection point along the other
+  // guideline, both ways.
+  for (std::size_t i = 0; i < s.lines.size(); ++i) {
+    if (static_cast<int>(i) == guide || !s.lines[i].guide) continue;
+    const ScaffoldLine& o = s.lines[i];
+    const LineLineHit q = closest_line_line(g.a, g.direction(), o.a, o.direction());
+    if (q.parallel || q.distance > s.tolerance) continue;
+    const Vec3 y = g.a + q.s * g.direction();
+    const double A = (x - y).norm();
+    if (!(A > s.tolerance)) continue;
+    out.push_back({static_cast<int>(i), y + A * o.direction()});
+    out.push_back({static_cast<int>(i), y - A * o.direction()});
+  }
+  return out;
+}
+
+}  // namespace sketchlab::analytic

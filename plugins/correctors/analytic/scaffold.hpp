@@ -1,0 +1,61 @@
+#pragma once
+// The 3D scaffold the inference reads from the sketch (§2, §3): straight
+// segments, guidelines (infinite lines), curves, their vertices and the
+// vanishing directions in use. Built fresh for every stroke from the network
+// (correctors keep no state between strokes).
+#include <vector>
+
+#include "sketchlab/sketch.hpp"
+
+namespace sketchlab::analytic {
+
+struct ScaffoldLine {
+  CurveId id = 0;
+  Vec3 a = Vec3::Zero(), b = Vec3::Zero();  // for a guideline: a point and a second point
+  bool guide = false;                        // guidelines are infinite lines
+  Vec3 direction() const { return (b - a).normalized(); }
+};
+
+struct ScaffoldVertex {
+  Vec3 p = Vec3::Zero();
+  std::vector<int> lines;  // indices into Scaffold::lines passing through p
+};
+
+struct ScaffoldCurve {
+  CurveId id = 0;
+  Curve curve;
+};
+
+struct Scaffold {
+  std::vector<ScaffoldLine> lines;  // segments and guidelines
+  std::vector<ScaffoldVertex> vertices;  // segment / curve ends, ticks (merged)
+  std::vector<ScaffoldCurve> curves;
+  std::vector<Vec3> vanishing;      // unit directions, one per parallel class
+  double extent = 1.0;              // bounding-box diagonal (>= 1e-3), metres
+  double tolerance = 1e-9;          // "lies on" tolerance, metres (1e-7 extent)
+  // Segment lengths and directions with multiplicities (equal within 1e-9
+  // relative), so the mixtures of eq. 4 cost one term per class.
+  std::vector<std::pair<double, int>> length_classes;
+  std::vector<std::pair<Vec3, int>> direction_classes;
+  double length_sum = 0.0;
+  int segment_count() const;        // lines that are not guidelines
+};
+
+// Reads every curve of the network. `up` seeds the vanishing directions with
+// the vertical; the first segment adds its own direction and its horizontal
+// perpendicular (§2: the first stroke defines the primary vanishing points).
+Scaffold build_scaffold(const Network& network, const Vec3& up);
+
+// Adds one curve (as build_scaffold would) so newly inferred geometry is seen
+// when free strokes are re-inferred.
+void add_to_scaffold(Scaffold& scaffold, const NetworkCurve& curve, const Vec3& up);
+
+// Closest points of the lines p + s·u and q + t·v (u, v unit): (s, t, distance);
+// parallel lines give s = 0.
+struct LineLineHit {
+  double s = 0, t = 0, distance = 0;
+  bool parallel = false;
+};
+LineLineHit closest_line_line(const Vec3& p, const Vec3& u, const Vec3& q, const Vec3& v);
+
+}  // namespace sketchlab::analytic

@@ -1,0 +1,23 @@
+# Defines the INTERFACE target sketchlab_openxr (headers + loader) when the
+# OpenXR loader is found (CMake config package, else pkg-config `openxr`);
+# shared by the openxr input plugin and the VR viewer.
+if(TARGET sketchlab_openxr)
+  return()
+endif()
+find_package(OpenXR CONFIG QUIET)
+if(TARGET OpenXR::openxr_loader)
+  add_library(sketchlab_openxr INTERFACE)
+  target_link_libraries(sketchlab_openxr INTERFACE OpenXR::openxr_loader)
+  if(TARGET OpenXR::headers)
+    target_link_libraries(sketchlab_openxr INTERFACE OpenXR::headers)
+  endif()
+  return()
+endif()
+find_package(PkgConfig QUIET)
+if(PkgConfig_FOUND)
+  pkg_check_modules(SKETCHLAB_OPENXR QUIET IMPORTED_TARGET GLOBAL openxr)
+  if(SKETCHLAB_OPENXR_FOUND)
+    add_library(sketchlab_openxr INTERFACE)
+    target_link_libraries(sketchlab_openxr INTERFACE PkgConfig::SKETCHLAB_OPENXR)
+  endif()
+endif()

@@ -1,0 +1,135 @@
+#include "headless_session.hpp"
+
+#include <cstring>
+#include <vector>
+
+#include "xr_result.hpp"
+
+namespace sketchlab::openxr {
+namespace {
+
+constexpr const char* no_runtime_hint =
+    "no OpenXR runtime is available: install one (Monado, SteamVR) and make it active, or set "
+    "XR_RUNTIME_JSON to its runtime manifest (e.g. /usr/share/openxr/1/openxr_monado.json)";
+
+bool offers(const char* extension) {
+  uint32_t n = 0;
+  if (XR_FAILED(xrEnumerateInstanceExtensionProperties(nullptr, 0, &n, nullptr))) return false;
+  std::vector<XrExtensionProperties> props(n, {XR_TYPE_EXTENSION_PROPERTIES});
+  if (XR_FAILED(xrEnumerateInstanceExtensionProperties(nullptr, n, &n, props.data()))) return false;
+  for (const auto& p : props)
+    if (std::strcmp(p.extensionName, extension) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+HeadlessSession::HeadlessSession(const InputSettings& settings, const Workspace& workspace)
+    : interpreter_(settings, workspace) {
+  uint32_t n = 0;
+  if (const XrResult r = xrEnumerateInstanceExtensionProperties(nullptr, 0, &n, nullptr); XR_FAILED(r))
+    throw XrError(r, std::string(no_runtime_hint) + " (" + result_name(r) + ")");
+  if (!offers(XR_MND_HEADLESS_EXTENSION_NAME))
+    throw XrError(XR_ERROR_EXTENSION_NOT_PRESENT,
+                  "the OpenXR runtime lacks XR_MND_headless, which the openxr input needs on its own; "
+                  "draw with `sketchlab vr CONFIG` instead (it reads the controllers in its session)");
+  const char* extensions[] = {XR_MND_HEADLESS_EXTENSION_NAME};
+  XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
+  std::strcpy(info.applicationInfo.applicationName, "sketchlab input");
+  info.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
+  info.enabledExtensionCount = 1;
+  info.enabledExtensionNames = extensions;
+  if (const XrResult r = xrCreateInstance(&info, &instance_); XR_FAILED(r))
+    throw XrError(r, std::string(no_runtime_hint) + " (xrCreateInstance: " + result_name(r) + ")");
+  try {
+    XrInstanceProperties props{XR_TYPE_INSTANCE_PROPERTIES};
+    if (XR_SUCCEEDED(xrGetInstanceProperties(instance_, &props))) runtime_name_ = props.runtimeName;
+    XrSystemGetInfo sys{XR_TYPE_SYSTEM_GET_INFO};
+    sys.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
+    if (const XrResult r = xrGetSystem(instance_, &sys, &system_); XR_FAILED(r))
+      throw XrError(r, "OpenXR runtime '" + runtime_name_ + "' has no headset (" + result_name(r) +
+                           "): connect and switch on the headset");
+    actions_ = std::make_unique<ControllerActions>(instance_, settings);
+    XrSessionCreateInfo sci{XR_TYPE_SESSION_CREATE_INFO};
+    sci.systemId = system_;
+    if (const XrResult r = xrCreateSession(instance_, &sci, &session_); XR_FAILED(r))
+      throw XrError(r, "OpenXR runtime '" + runtime_name_ + "' refused the session (" + result_name(r) +
+                           "): close other VR applications and check the headset");
+    actions_->attach(session_);
+    XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+    space.poseInReferenceSpace.orientation.w = 1.0f;
+    space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_STAGE;
+    if (XR_FAILED(xrCreateReferenceSpace(session_, &space, &base_))) {
+      space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+      check(xrCreateReferenceSpace(session_, &space, &base_), "xrCreateReferenceSpace(LOCAL)");
+    }
+    space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
+    check(xrCreateReferenceSpace(session_, &space, &view_), "xrCreateReferenceSpace(VIEW)");
+  } catch (...) {
+    actions_.reset();
+    if (session_ != XR_NULL_HANDLE) xrDestroySession(session_);
+    xrDestroyInstance(instance_);
+    throw;
+  }
+}
+
+HeadlessSession::~HeadlessSession() {
+  actions_.reset();
+  if (base_ != XR_NULL_HANDLE) xrDestroySpace(base_);
+  if (view_ != XR_NULL_HANDLE) xrDestroySpace(view_);
+  if (session_ != XR_NULL_HANDLE) xrDestroySession(session_);
+  if (instance_ != XR_NULL_HANDLE) xrDestroyInstance(instance_);
+}
+
+bool HeadlessSession::poll_state() {
+  XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER};
+  while (xrPollEvent(instance_, &event) == XR_SUCCESS) {
+    if (event.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) return false;
+    if (event.type == XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) {
+      state_ = reinterpret_cast<const XrEventDataSessionStateChanged&>(event).state;
+      if (state_ == XR_SESSION_STATE_READY) {
+        XrSessionBeginInfo begin{XR_TYPE_SESSION_BEGIN_INFO};
+        begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+        check(xrBeginSession(session_, &begin), "xrBeginSession");
+        running_ = true;
+      } else if (state_ == XR_SESSION_STATE_STOPPING) {
+        check(xrEndSession(session_), "xrEndSession");
+        running_ = false;
+      } else if (state_ == XR_SESSION_STATE_EXITING || state_ == XR_SESSION_STATE_LOSS_PENDING) {
+        return false;
+      }
+    }
+    event = {XR_TYPE_EVENT_DATA_BUFFER};
+  }
+  return true;
+}
+
+std::vector<Event> HeadlessSession::next_events() {
+  std::vector<Event> events;
+  while (events.empty() && !ended_) {
+    if (!poll_state()) {
+      ended_ = true;
+      // The stroke in progress and an unfinished zoom are kept.
+      ControllerFrame last;
+      last.focused = false;
+      last.time = last_seconds_;
+      return interpreter_.step(last);
+    }
+    if (!running_) continue;
+    XrFrameState fs{XR_TYPE_FRAME_STATE};
+    check(xrWaitFrame(session_, nullptr, &fs), "xrWaitFrame");
+    check(xrBeginFrame(session_, nullptr), "xrBeginFrame");
+    if (start_ == 0) start_ = fs.predictedDisplayTime;
+    const double seconds = static_cast<double>(fs.predictedDisplayTime - start_) * 1e-9;
+    last_seconds_ = seconds;
+    events = interpreter_.step(actions_->poll(session_, base_, view_, fs.predictedDisplayTime, seconds,
+                                              state_ == XR_SESSION_STATE_FOCUSED));
+    XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
+    end.displayTime = fs.predictedDisplayTime;
+    end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    check(xrEndFrame(session_, &end), "xrEndFrame");
+  }
+  return events;
+}
+
+}  // namespace sketchlab::openxr

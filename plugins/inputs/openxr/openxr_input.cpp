@@ -1,0 +1,47 @@
+// The openxr input plugin: controllers of an OpenXR headset as session
+// events (gesture_interpreter.hpp). On its own it opens a headless OpenXR
+// session (XR_MND_headless); `sketchlab vr` reads the same actions inside
+// its rendering session instead.
+#include <deque>
+
+#include "headless_session.hpp"
+#include "sketchlab/plugin/plugin_api.hpp"
+
+namespace {
+
+using namespace sketchlab;
+
+class OpenXrInput : public Input {
+ public:
+  explicit OpenXrInput(const Params& p)
+      : session_(openxr::settings_from_params(p), Workspace{}) {
+    header_.units = "m";
+    header_.source = {{"input", "openxr"}, {"runtime", session_.runtime_name()}};
+  }
+  RecordingHeader header() const override { return header_; }
+  std::optional<Event> next() override {
+    if (pending_.empty() && !session_.ended())
+      for (auto& e : session_.next_events()) pending_.push_back(std::move(e));
+    if (pending_.empty()) return std::nullopt;
+    Event e = std::move(pending_.front());
+    pending_.pop_front();
+    return e;
+  }
+  bool finished() const override { return pending_.empty() && session_.ended(); }
+
+ private:
+  openxr::HeadlessSession session_;
+  RecordingHeader header_;
+  std::deque<Event> pending_;
+};
+
+PluginDescriptor describe() {
+  return input_descriptor<OpenXrInput>(
+      "openxr", "1.0",
+      "OpenXR controllers: draw with the trigger (pressure), grab to move, two-hand zoom, commands on buttons",
+      openxr::input_param_specs());
+}
+
+}  // namespace
+
+SKETCHLAB_PLUGIN(describe)

@@ -1,0 +1,87 @@
+// The openxr input on its own (headless OpenXR session) through the real
+// loader and the test runtime: `sketchlab record --input openxr`.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "sketchlab/recording/recording_reader.hpp"
+
+#ifdef SKETCHLAB_TEST_XR_RUNTIME_JSON
+
+using namespace sketchlab;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string output;
+};
+
+Run run(const std::string& command) {
+  Run r;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("sketchlab_xr_input_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string env(const std::filesystem::path& script) {
+  return std::string("XR_RUNTIME_JSON=") + SKETCHLAB_TEST_XR_RUNTIME_JSON + " SKETCHLAB_XR_SCRIPT=" + script.string() + " ";
+}
+
+}  // namespace
+
+TEST_CASE("record --input openxr reads the scripted controllers through the loader", "[openxr]") {
+  const auto dir = fresh_dir("record");
+  const auto script = dir / "script.txt";
+  {
+    std::ofstream s(script);
+    s << "frame 3 right=0,1.2,-0.3\n";
+    for (int i = 0; i <= 10; ++i) s << "frame right=" << 0.02 * i << ",1.2,-0.3 right/input/trigger/value=0.5\n";
+    s << "frame 2 right/input/trigger/value=0\n"
+         "frame 2 left/input/x/click=1\n"
+         "frame 2 left/input/x/click=0\n";
+  }
+  const auto out = dir / "rec.jsonl";
+  const Run r = run(env(script) + SKETCHLAB_CLI " record --input openxr -o " + out.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const Recording rec = read_recording(out);
+  CHECK(rec.header.source.at("input") == "openxr");
+  CHECK(rec.header.source.at("runtime") == "sketchlab test runtime");
+  REQUIRE(rec.events.size() == 2);
+  const auto& stroke = std::get<StrokeEvent>(rec.events[0].payload).stroke;
+  REQUIRE(stroke.samples.size() == 11);
+  for (int i = 0; i <= 10; ++i) {
+    CHECK((stroke.samples[i].position - Vec3(0.02 * i, 1.2, -0.3)).norm() < 1e-6);
+    CHECK(stroke.samples[i].pressure == Approx(0.5));
+  }
+  CHECK(std::holds_alternative<UndoEvent>(rec.events[1].payload));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("without XR_MND_headless the input says to use `sketchlab vr`", "[openxr]") {
+  const auto dir = fresh_dir("noheadless");
+  const auto script = dir / "script.txt";
+  std::ofstream(script) << "option headless 0\nframe 2\n";
+  const Run r = run(env(script) + SKETCHLAB_CLI " record --input openxr -o " + (dir / "rec.jsonl").string());
+  CHECK(r.status == 1);
+  CHECK_THAT(r.output, Catch::Contains("XR_MND_headless") && Catch::Contains("sketchlab vr"));
+  std::filesystem::remove_all(dir);
+}
+
+#endif

@@ -1,0 +1,28 @@
+#pragma once
+// The stacks of configs/compare.yaml, built from the plugins of this build.
+#include <vector>
+
+#include "sketchlab/config/config.hpp"
+#include "sketchlab/plugin/plugin_host.hpp"
+#include "sketchlab/run/stack.hpp"
+#include "test_paths.hpp"
+
+namespace sketchlab::test {
+
+inline const PluginHost& plugin_host() {
+  static const PluginHost host = [] {
+    PluginHost h;
+    h.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+    return h;
+  }();
+  return host;
+}
+
+inline std::vector<StackInstance> compare_stacks() {
+  std::vector<StackInstance> out;
+  for (const StackConfig& c : load_experiment(source_path("configs/compare.yaml")).stacks)
+    out.push_back(instantiate_stack(c, plugin_host()));
+  return out;
+}
+
+}  // namespace sketchlab::test

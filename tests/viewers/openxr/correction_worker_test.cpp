@@ -1,0 +1,94 @@
+// The VR viewer's correction worker: a slow corrector never blocks the
+// thread that submits events (the render loop); the result appears when
+// ready, and the recording is the same as handling the events inline.
+#include <catch2/catch.hpp>
+
+// Only when the VR viewer is built (its internals are on the include path).
+#if __has_include("correction_worker.hpp")
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+#include <unistd.h>
+
+#include "correction_worker.hpp"
+#include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+
+using namespace sketchlab;
+namespace fs = std::filesystem;
+
+namespace {
+
+class SlowCorrector : public Corrector {
+ public:
+  explicit SlowCorrector(int ms) : ms_(ms) {}
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms_));
+    Correction c;
+    c.edit = freehand_edit(stroke, sketch, PreprocessParams{});
+    return c;
+  }
+
+ private:
+  int ms_;
+};
+
+Event stroke_event(StrokeId id, double y) {
+  Stroke s;
+  s.id = id;
+  for (int i = 0; i < 10; ++i) {
+    Sample p;
+    p.position = Vec3(0.02 * i, y, 0.0);
+    p.time = 0.1 * id + 0.001 * i;
+    s.samples.push_back(p);
+  }
+  return {0.1 * id + 0.01, StrokeEvent{s}};
+}
+
+}  // namespace
+
+TEST_CASE("a slow corrector does not block submission; results appear when ready", "[openxr]") {
+  const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_" + std::to_string(getpid()) + ".jsonl");
+  auto live = std::make_unique<LiveSession>(RecordingHeader{},
+                                            std::vector<StackInstance>{{"slow", std::make_shared<SlowCorrector>(300), nullptr}},
+                                            rec, true);
+  vr::CorrectionWorker worker(std::move(live), 0);
+  const auto before = worker.latest();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (StrokeId id = 1; id <= 3; ++id) worker.submit(stroke_event(id, 0.1 * id));
+  const double submit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  CHECK(submit_ms < 100.0);  // three corrections take 900 ms
+  CHECK(worker.latest()->version == before->version);  // nothing finished yet
+  CHECK(worker.latest()->sketch.network.curves().empty());
+  const auto final_snapshot = worker.finish();
+  CHECK(final_snapshot->events == 3);
+  CHECK(final_snapshot->sketch.network.curves().size() == 3);
+  CHECK(worker.problems().empty());
+  // Recorded before corrected, in order: the file replays to the same sketch.
+  const Recording recording = read_recording(rec);
+  REQUIRE(recording.events.size() == 3);
+  Session inline_session(Workspace{}, std::make_shared<SlowCorrector>(0), nullptr);
+  for (const auto& e : recording.events) inline_session.handle(e);
+  CHECK(sketch_to_json(inline_session.sketch()) == sketch_to_json(final_snapshot->sketch));
+  fs::remove(rec);
+}
+
+TEST_CASE("an event the recording refuses is reported, not fatal", "[openxr]") {
+  const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_bad_" + std::to_string(getpid()) + ".jsonl");
+  auto live = std::make_unique<LiveSession>(RecordingHeader{},
+                                            std::vector<StackInstance>{{"fast", std::make_shared<SlowCorrector>(0), nullptr}},
+                                            rec, true);
+  vr::CorrectionWorker worker(std::move(live), 0);
+  worker.submit(stroke_event(1, 0.1));
+  worker.submit({0.0, UndoEvent{}});  // earlier than the stroke: refused
+  worker.submit({1.0, UndoEvent{}});
+  const auto last = worker.finish();
+  REQUIRE(worker.problems().size() == 1);
+  CHECK_THAT(worker.problems()[0], Catch::Contains("undo") && Catch::Contains("not recorded"));
+  CHECK(last->events == 2);
+  CHECK(read_recording(rec).events.size() == 2);
+  fs::remove(rec);
+}
+
+#endif

@@ -1,0 +1,474 @@
+// `sketchlab vr` end to end through Debian's OpenXR loader and the test
+// runtime (tests/fixtures/openxr_runtime): a scripted session draws a
+// square and a line with the trigger, undoes once, grabs and zooms. The
+// recording must hold exactly those events, replay to the same sketch, and
+// the frames the runtime read back from the swapchains must show the
+// strokes where they project.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sketchlab/config/config.hpp"
+#include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/plugin/recording_input.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+#include "sketchlab/run/stack.hpp"
+#include "test_paths.hpp"
+#include "viewers/xvfb.hpp"
+
+#ifdef SKETCHLAB_TEST_XR_RUNTIME_JSON
+
+using namespace sketchlab;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double dt = 1.0 / 90.0;
+
+struct Run {
+  int status = -1;
+  std::string output;
+};
+
+Run run(const std::string& command) {
+  Run r;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / ("sketchlab_vr_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string vr_command(const fs::path& script, const fs::path& dir, const std::string& runtime_json) {
+  return "XR_RUNTIME_JSON=" + runtime_json + " SKETCHLAB_XR_SCRIPT=" + script.string() + " " SKETCHLAB_CLI " vr " +
+         test::source_path("configs/stacks/cassie.yaml") + " -o " + (dir / "vr.jsonl").string() + " --sketch " +
+         (dir / "vr_sketch.json").string();
+}
+
+std::string xyz(const Vec3& p) {
+  std::ostringstream s;
+  s.precision(17);
+  s << p.x() << "," << p.y() << "," << p.z();
+  return s.str();
+}
+
+// The scripted session; frame numbers of interest are returned.
+struct Scenario {
+  std::vector<Vec3> square, line;  // scripted hand positions while drawing
+  int square_start = 0, line_start = 0, dump_drawing = 0, dump_done = 0;
+};
+
+Scenario write_script(const fs::path& path, const fs::path& dump_dir) {
+  Scenario sc;
+  std::ofstream s(path);
+  s << "option eye_size 320 240\noption fov 45 36\noption dump_dir " << dump_dir.string() << "\n";
+  int frame = 0;
+  auto emit = [&](const std::string& line, int count = 1) {
+    s << "frame " << count << " " << line << "\n";
+    frame += count;
+  };
+  emit("head=0,1.5,0.6 left=-0.6,1.0,0.4 right=-0.1,1.4,0", 5);
+  const Vec3 c[5] = {{-0.1, 1.4, 0}, {0.1, 1.4, 0}, {0.1, 1.6, 0}, {-0.1, 1.6, 0}, {-0.1, 1.4, 0}};
+  sc.square_start = frame;
+  for (int e = 0; e < 4; ++e)
+    for (int k = 0; k < 10; ++k) {
+      sc.square.push_back(c[e] + (c[e + 1] - c[e]) * (k / 10.0));
+      emit("right=" + xyz(sc.square.back()) + " right/input/trigger/value=0.8");
+    }
+  sc.square.push_back(c[4]);
+  emit("right=" + xyz(c[4]));
+  emit("right/input/trigger/value=0");
+  emit("", 5);
+  sc.line_start = frame;
+  for (int k = 0; k <= 20; ++k) {
+    sc.line.push_back(Vec3(-0.15 + 0.3 * k / 20.0, 1.3, 0.0));
+    const bool dump = k == 12;
+    if (dump) sc.dump_drawing = frame;
+    emit("right=" + xyz(sc.line.back()) + " right/input/trigger/value=0.6" + (dump ? " dump" : ""));
+  }
+  emit("right/input/trigger/value=0");
+  emit("", 59);
+  sc.dump_done = frame;
+  emit("dump");
+  emit("left/input/x/click=1", 3);  // undo (Touch: left X)
+  emit("left/input/x/click=0", 5);
+  // One-hand grab: the workspace follows the left hand.
+  emit("left/input/squeeze/value=1");
+  for (int k = 1; k <= 10; ++k) emit("left=" + xyz(Vec3(-0.6 + 0.01 * k, 1.0, 0.4)));
+  emit("left/input/squeeze/value=0", 5);
+  // Two-hand zoom from 0.4 m to 0.6 m between the hands: s = 1.5.
+  for (int k = 0; k <= 10; ++k)
+    emit("left=" + xyz(Vec3(-0.2 - 0.01 * k, 1.4, -0.1)) + " right=" + xyz(Vec3(0.2 + 0.01 * k, 1.4, -0.1)) +
+         " left/input/squeeze/value=1 right/input/squeeze/value=1");
+  emit("left/input/squeeze/value=0 right/input/squeeze/value=0", 5);
+  return sc;
+}
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;  // top row first
+  const unsigned char* at(int x, int y) const { return rgb.data() + 3 * (static_cast<std::size_t>(y) * width + x); }
+};
+
+Image read_ppm(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  REQUIRE(in);
+  std::string magic;
+  int max = 0;
+  Image img;
+  in >> magic >> img.width >> img.height >> max;
+  in.get();
+  REQUIRE(magic == "P6");
+  img.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
+  in.read(reinterpret_cast<char*>(img.rgb.data()), static_cast<std::streamsize>(img.rgb.size()));
+  REQUIRE(in);
+  return img;
+}
+
+// The view the application submitted for this image (pose, fov).
+struct EyeFile {
+  Vec3 position;
+  Quat orientation;
+  double left, right, up, down;
+};
+
+EyeFile read_eye(const fs::path& file) {
+  std::ifstream in(file);
+  EyeFile e;
+  double qx, qy, qz, qw;
+  in >> e.position.x() >> e.position.y() >> e.position.z() >> qx >> qy >> qz >> qw >> e.left >> e.right >> e.up >> e.down;
+  REQUIRE(in);
+  e.orientation = Quat(qw, qx, qy, qz).normalized();
+  return e;
+}
+
+// Pixel (x right, y down from the top) where a stage point projects.
+Vec2 project(const EyeFile& eye, const Image& img, const Vec3& p) {
+  const Vec3 v = eye.orientation.conjugate() * (p - eye.position);
+  const double tx = v.x() / -v.z(), ty = v.y() / -v.z();
+  const double nx = (tx - std::tan(eye.left)) / (std::tan(eye.right) - std::tan(eye.left));
+  const double ny = (ty - std::tan(eye.down)) / (std::tan(eye.up) - std::tan(eye.down));
+  return {nx * img.width, (1.0 - ny) * img.height};
+}
+
+bool drawn(const Image& img, int x, int y, const unsigned char* background) {
+  if (x < 0 || y < 0 || x >= img.width || y >= img.height) return false;
+  const unsigned char* p = img.at(x, y);
+  int diff = 0;
+  for (int c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(p[c]) - int(background[c])));
+  return diff > 30;
+}
+
+double distance_to_polyline(const Vec2& q, const std::vector<Vec2>& line) {
+  double best = 1e300;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    const Vec2 a = line[i], b = line[i + 1], ab = b - a;
+    const double t = ab.squaredNorm() > 0 ? std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * ab - q).norm());
+  }
+  if (line.size() == 1) best = (line[0] - q).norm();
+  return best;
+}
+
+struct FrameCheck {
+  double visible = 0;   // fraction of `must_show` points with a drawn pixel within 2 px
+  double explained = 0; // fraction of drawn pixels within 6 px of `allowed` strokes or the hand
+  int drawn_pixels = 0;
+};
+
+FrameCheck check_frame(const fs::path& stem, const std::vector<std::vector<Vec3>>& must_show,
+                       const std::vector<std::vector<Vec3>>& allowed, const Vec3& hand) {
+  const Image img = read_ppm(stem.string() + ".ppm");
+  const EyeFile eye = read_eye(stem.string() + ".txt");
+  const unsigned char* background = img.at(0, 0);
+  FrameCheck r;
+  int shown = 0, total = 0;
+  for (const auto& stroke : must_show)
+    for (const Vec3& p : stroke) {
+      const Vec2 q = project(eye, img, p);
+      bool hit = false;
+      for (int dy = -2; dy <= 2 && !hit; ++dy)
+        for (int dx = -2; dx <= 2 && !hit; ++dx)
+          hit = drawn(img, int(std::lround(q.x())) + dx, int(std::lround(q.y())) + dy, background);
+      shown += hit;
+      ++total;
+    }
+  r.visible = total ? double(shown) / total : 0.0;
+  std::vector<std::vector<Vec2>> lines;
+  for (const auto& stroke : allowed) {
+    lines.emplace_back();
+    for (const Vec3& p : stroke) lines.back().push_back(project(eye, img, p));
+  }
+  const Vec2 hand_px = project(eye, img, hand);
+  int explained = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      if (!drawn(img, x, y, background)) continue;
+      ++r.drawn_pixels;
+      const Vec2 q(x + 0.5, y + 0.5);
+      bool ok = (q - hand_px).norm() < 10.0;
+      for (const auto& l : lines) ok = ok || distance_to_polyline(q, l) < 6.0;
+      explained += ok;
+    }
+  r.explained = r.drawn_pixels ? double(explained) / r.drawn_pixels : 0.0;
+  return r;
+}
+
+// The stack's sketch after the first `events` events of `rec`.
+Sketch replay_prefix(const Recording& rec, std::size_t events) {
+  PluginHost host;
+  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+  const StackInstance stack = instantiate_stack(load_stack(test::source_path("configs/stacks/cassie.yaml")), host);
+  Recording prefix = rec;
+  prefix.events.resize(events);
+  RecordingInput input(prefix);
+  return replay(input, stack).session.sketch();
+}
+
+// Each corrected curve as a polyline (stage = workspace before any grab).
+std::vector<std::vector<Vec3>> curve_polylines(const Sketch& sketch) {
+  std::vector<std::vector<Vec3>> out;
+  for (const auto& [id, c] : sketch.network.curves()) {
+    out.emplace_back();
+    const int n = 50 * c.curve.segment_count();
+    for (int i = 0; i <= n; ++i) out.back().push_back(evaluate(c.curve, c.curve.t_max() * i / n));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a scripted VR session records exactly what was done and replays identically", "[openxr][viewer]") {
+  test::ensure_display();
+  const auto dir = fresh_dir("session");
+  const auto dumps = dir / "frames";
+  fs::create_directories(dumps);
+  const Scenario sc = write_script(dir / "script.txt", dumps);
+  const Run r = run(vr_command(dir / "script.txt", dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.output, Catch::Contains("4 events recorded"));
+
+  const Recording rec = read_recording(dir / "vr.jsonl");
+  CHECK(rec.header.units == "m");
+  CHECK(rec.header.source.at("input") == "openxr");
+  REQUIRE(rec.events.size() == 4);
+  const auto& square = std::get<StrokeEvent>(rec.events[0].payload).stroke;
+  const auto& line = std::get<StrokeEvent>(rec.events[1].payload).stroke;
+  CHECK(std::holds_alternative<UndoEvent>(rec.events[2].payload));
+  const auto& ws = std::get<WorkspaceEvent>(rec.events[3].payload).workspace;
+
+  SECTION("strokes are the scripted hand positions, pressures and times") {
+    REQUIRE(square.samples.size() == sc.square.size());
+    REQUIRE(line.samples.size() == sc.line.size());
+    for (std::size_t i = 0; i < sc.square.size(); ++i) {
+      CHECK((square.samples[i].position - sc.square[i]).norm() < 1e-6);
+      CHECK(square.samples[i].pressure == Approx(0.8).margin(1e-6));
+      CHECK(square.samples[i].time == Approx((sc.square_start + int(i)) * dt).margin(1e-9));
+    }
+    for (std::size_t i = 0; i < sc.line.size(); ++i) {
+      CHECK((line.samples[i].position - sc.line[i]).norm() < 1e-6);
+      CHECK(line.samples[i].pressure == Approx(0.6).margin(1e-6));
+    }
+    CHECK(square.id == 1);
+    CHECK(line.id == 2);
+    CHECK(square.view.has_value());
+    CHECK(square.workspace_scale == 1.0);
+  }
+  SECTION("the zoom is recorded as the workspace scale (hands 0.4 m -> 0.6 m apart)") {
+    CHECK(ws.scale == Approx(1.5).epsilon(1e-6));
+    for (std::size_t i = 1; i < rec.events.size(); ++i) CHECK(rec.events[i].time >= rec.events[i - 1].time);
+  }
+  SECTION("the corrected curves equal those of replaying the recording") {
+    const Sketch replayed = replay_prefix(rec, rec.events.size());
+    std::ifstream live(dir / "vr_sketch.json");
+    std::stringstream text;
+    text << live.rdbuf();
+    CHECK(text.str() == sketch_to_json(replayed));
+    // The undo took the line back: only the square's curves remain.
+    REQUIRE_FALSE(replayed.network.curves().empty());
+    for (const auto& [id, c] : replayed.network.curves()) CHECK(c.source_stroke == 1);
+    CHECK(replayed.workspace.scale == Approx(1.5).epsilon(1e-6));
+    // And through `sketchlab run` (its sketch.json adds the constraints each
+    // stroke considered; everything else must match byte for byte).
+    std::ofstream(dir / "replay.yaml") << "experiment: vr-replay\nrecordings: [vr.jsonl]\n"
+                                          "stacks:\n  - name: cassie\n    corrector: {plugin: cassie, params: {mirror: plane}}\n"
+                                          "outputs: {dir: runs, timestamp: false}\n";
+    const Run ran = run("cd " + dir.string() + " && " SKETCHLAB_CLI " run replay.yaml --no-timings");
+    INFO(ran.output);
+    REQUIRE(ran.status == 0);
+    std::ifstream cli_file(dir / "runs/vr-replay/vr/cassie/sketch.json");
+    const auto from_run = nlohmann::json::parse(cli_file);
+    const auto from_vr = nlohmann::json::parse(text.str());
+    for (const char* key : {"workspace", "counters", "curves", "nodes", "segments", "patches", "strokes"}) {
+      INFO(key);
+      CHECK(from_run.at(key) == from_vr.at(key));
+    }
+  }
+  SECTION("frames read back from the swapchains show the strokes where they project") {
+    // Drawn pixels must be raw strokes or the corrected curves (as replay
+    // computes them), nothing else but the controller.
+    auto allowed_during = curve_polylines(replay_prefix(rec, 1));
+    auto allowed_after = curve_polylines(replay_prefix(rec, 2));
+    for (int eye = 0; eye < 2; ++eye) {
+      // While drawing the line: the stroke in progress is drawn by the
+      // render thread itself (the square may or may not be corrected yet).
+      std::vector<Vec3> drawn_so_far;
+      for (const auto& s : line.samples)
+        if (s.time <= sc.dump_drawing * dt + 1e-9) drawn_so_far.push_back(s.position);
+      REQUIRE(drawn_so_far.size() == 13);
+      const auto stem1 = dumps / ("frame" + std::to_string(sc.dump_drawing) + "_eye" + std::to_string(eye));
+      auto allowed = allowed_during;
+      allowed.push_back(drawn_so_far);
+      allowed.push_back(sc.square);
+      const FrameCheck during = check_frame(stem1, {drawn_so_far}, allowed, drawn_so_far.back());
+      CHECK(during.drawn_pixels > 50);
+      CHECK(during.visible >= 0.9);
+      CHECK(during.explained >= 0.97);
+      // 60 frames after the line: both strokes are corrected and shown.
+      const auto stem2 = dumps / ("frame" + std::to_string(sc.dump_done) + "_eye" + std::to_string(eye));
+      allowed = allowed_after;
+      allowed.push_back(sc.square);
+      allowed.push_back(sc.line);
+      const FrameCheck after = check_frame(stem2, {sc.square, sc.line}, allowed, sc.line.back());
+      CHECK(after.drawn_pixels > 100);
+      CHECK(after.visible >= 0.9);
+      CHECK(after.explained >= 0.97);
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("focus loss and session loss keep what was drawn", "[openxr][viewer]") {
+  test::ensure_display();
+  const auto dir = fresh_dir("states");
+  const auto script = dir / "script.txt";
+  auto write = [&](const std::string& option) {
+    std::ofstream s(script);
+    s << option << "\nframe 5 head=0,1.5,0.6 right=0,1.4,0\n";
+    for (int f = 5; f <= 30; ++f)
+      s << "frame right=" << 0.005 * f << ",1.4,0 right/input/trigger/value=0.7" << (f >= 20 ? " left/input/x/click=1" : "")
+        << "\n";
+    s << "frame 5 right/input/trigger/value=0 left/input/x/click=0\n";
+  };
+  SECTION("focus lost mid-stroke: the stroke ends there, a button held across the loss does not fire") {
+    // Input goes away from frame 15 to 25 (the runtime reports VISIBLE).
+    write("option unfocus_at 15\noption refocus_at 25");
+    const Run r = run(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
+    INFO(r.output);
+    REQUIRE(r.status == 0);
+    const Recording rec = read_recording(dir / "vr.jsonl");
+    REQUIRE(rec.events.size() == 2);
+    const auto& first = std::get<StrokeEvent>(rec.events[0].payload).stroke;
+    const auto& second = std::get<StrokeEvent>(rec.events[1].payload).stroke;
+    REQUIRE(first.samples.size() == 10);  // frames 5..14
+    CHECK(first.samples.front().time == Approx(5 * dt).margin(1e-9));
+    CHECK(first.samples.back().time == Approx(14 * dt).margin(1e-9));
+    CHECK(second.samples.front().time > 25 * dt - 1e-9);
+  }
+  SECTION("session lost: exit status 1 with a message, the recording keeps the stroke") {
+    write("option lose_at 20");
+    const Run r = run(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains("lost the session") && Catch::Contains("vr.jsonl"));
+    const Recording rec = read_recording(dir / "vr.jsonl");
+    REQUIRE(rec.events.size() == 1);
+    CHECK(std::get<StrokeEvent>(rec.events[0].payload).stroke.samples.size() == 15);  // frames 5..19
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the grid near the hand and the mirror plane are drawn when the workspace enables them",
+          "[openxr][viewer]") {
+  test::ensure_display();
+  const auto dir = fresh_dir("helpers");
+  const auto dumps = dir / "frames";
+  fs::create_directories(dumps);
+  std::ofstream(dir / "script.txt") << "option eye_size 320 240\noption fov 45 36\noption dump_dir " << dumps.string()
+                                    << "\nframe 3 head=0.5,1.5,0.6 left=-0.6,1.0,0.4 right=0.1,1.45,0\nframe dump\n";
+  const Run r = run(vr_command(dir / "script.txt", dir, SKETCHLAB_TEST_XR_RUNTIME_JSON) + " --grid 0.1 --mirror");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const Recording rec = read_recording(dir / "vr.jsonl");
+  CHECK(rec.header.workspace.grid_enabled);
+  CHECK(rec.header.workspace.grid_spacing == 0.1);
+  CHECK(rec.header.workspace.mirror_enabled);
+  const auto stem = dumps / "frame3_eye0";
+  const Image img = read_ppm(stem.string() + ".ppm");
+  const EyeFile eye = read_eye(stem.string() + ".txt");
+  const unsigned char* background = img.at(img.width - 1, 0);
+  auto differs = [&](const Vec3& p, int margin, int radius) {
+    const Vec2 q = project(eye, img, p);
+    for (int dy = -radius; dy <= radius; ++dy)
+      for (int dx = -radius; dx <= radius; ++dx) {
+        const int x = int(std::lround(q.x())) + dx, y = int(std::lround(q.y())) + dy;
+        if (x < 0 || y < 0 || x >= img.width || y >= img.height) continue;
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(int(img.at(x, y)[c]) - int(background[c])) > margin) return true;
+      }
+    return false;
+  };
+  // Grid points within two cells of the hand (cell (1, 14, 0) of 0.1 m).
+  int shown = 0, total = 0;
+  for (int i = -1; i <= 3; ++i)
+    for (int j = 12; j <= 16; ++j) {
+      const Vec3 p(0.1 * i, 0.1 * j, 0.0);
+      const Vec2 q = project(eye, img, p);
+      if (q.x() < 3 || q.y() < 3 || q.x() > img.width - 3 || q.y() > img.height - 3) continue;
+      ++total;
+      shown += differs(p, 30, 2);
+    }
+  CHECK(total >= 10);
+  CHECK(shown >= 0.9 * total);
+  // The mirror plane x = 0 tints what lies behind it, away from grid points.
+  CHECK(differs(Vec3(0.0, 1.45, -0.45), 8, 0));
+  CHECK_FALSE(differs(Vec3(0.45, 1.75, -0.45), 8, 0));  // beyond the plane's edge, off the grid
+  fs::remove_all(dir);
+}
+
+TEST_CASE("VR failures print one message saying what is missing and exit cleanly", "[openxr][viewer]") {
+  test::ensure_display();
+  const auto dir = fresh_dir("failures");
+  const auto script = dir / "script.txt";
+  auto expect = [&](const std::string& options, const std::string& runtime, const std::string& message) {
+    std::ofstream(script) << options << "frame 5\n";
+    const Run r = run(vr_command(script, dir, runtime));
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.output, Catch::Contains(message));
+    CHECK_THAT(r.output, !Catch::Contains("terminate") && !Catch::Contains("Segmentation"));
+    CHECK_FALSE(fs::exists(dir / "vr.jsonl"));  // nothing half-made is left
+  };
+  SECTION("no runtime") { expect("", (dir / "missing_runtime.json").string(), "XR_RUNTIME_JSON"); }
+  SECTION("runtime refuses the session") {
+    expect("option refuse_session 1\n", SKETCHLAB_TEST_XR_RUNTIME_JSON, "refused the session");
+  }
+  SECTION("runtime without OpenGL") {
+    expect("option no_opengl 1\n", SKETCHLAB_TEST_XR_RUNTIME_JSON, "XR_KHR_opengl_enable");
+  }
+  SECTION("no headset") { expect("option no_headset 1\n", SKETCHLAB_TEST_XR_RUNTIME_JSON, "reports no headset"); }
+  fs::remove_all(dir);
+}
+
+#endif

@@ -1,0 +1,203 @@
+#include "sketchlab/vr/vr_app.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <iostream>
+#include <thread>
+
+#include "correction_worker.hpp"
+#include "eye_renderer.hpp"
+#include "sketchlab/config/config.hpp"
+#include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/run/stack.hpp"
+#include "sketchlab/viewer/display.hpp"
+#include "vr_scene.hpp"
+#include "xr_actions.hpp"
+#include "xr_render_session.hpp"
+
+namespace sketchlab::vr {
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+// Ctrl-C asks the runtime to end the session, so the loop leaves through
+// the normal STOPPING -> EXITING path and the recording is closed.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    g_interrupted = false;
+    previous_ = std::signal(SIGINT, on_interrupt);
+  }
+  ~InterruptGuard() { std::signal(SIGINT, previous_); }
+
+ private:
+  void (*previous_)(int) = SIG_DFL;
+};
+
+std::filesystem::path default_recording() {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::gmtime(&now));
+  return std::string("vr-") + stamp + ".jsonl";
+}
+
+openxr::InputSettings input_settings(const StackConfig& stack, std::ostream& err) {
+  std::map<std::string, ParamValue> given;
+  if (stack.input) {
+    if (stack.input->plugin != "openxr") {
+      err << "sketchlab vr: " << stack.input->location.to_string() << ": input '" << stack.input->plugin
+          << "' ignored: VR sessions read the controllers (the openxr input)\n";
+    } else {
+      given = stack.input->params;
+    }
+  }
+  try {
+    return openxr::settings_from_params(validate_params(openxr::input_param_specs(), given));
+  } catch (const ParamError& e) {
+    if (stack.input) rethrow_param_error(e, *stack.input);
+    throw ConfigError(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError((stack.input ? stack.input->location.to_string() + ": " : std::string()) + e.what());
+  }
+}
+
+// The session is destroyed while its GL context is current (the runtime
+// frees the swapchain textures in it).
+struct CurrentOnExit {
+  std::unique_ptr<EyeRenderer>& eyes;
+  ~CurrentOnExit() {
+    if (eyes) eyes->make_current();
+  }
+};
+
+}  // namespace
+
+int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, std::ostream& err,
+           VrStats* stats) {
+  std::vector<Override> overrides;
+  for (const auto& o : options.overrides) overrides.push_back(parse_override(o));
+  const StackConfig stack = load_stack(options.config, overrides);
+  const openxr::InputSettings settings = input_settings(stack, err);
+  StackInstance instance = instantiate_stack(stack, host);
+  if (!(options.grid_spacing >= 0.0 && options.grid_spacing < 100.0))
+    throw std::invalid_argument("--grid: spacing must be in [0, 100) m, got " + std::to_string(options.grid_spacing));
+  const std::filesystem::path recording = options.recording.empty() ? default_recording() : options.recording;
+  if (!options.overwrite && std::filesystem::exists(recording))
+    throw std::runtime_error(recording.string() + ": already exists; pass --overwrite to replace it");
+
+  viewer::require_display();
+  const viewer::DisplayConnection display;
+  std::unique_ptr<EyeRenderer> eyes;
+  XrRenderSession xr;
+  const CurrentOnExit current{eyes};
+  eyes = std::make_unique<EyeRenderer>(xr.eye_width(), xr.eye_height());
+  openxr::ControllerActions actions(xr.instance(), settings);
+  xr.start(eyes->glx_handles());
+  actions.attach(xr.session());
+
+  RecordingHeader header;
+  header.units = "m";
+  if (options.grid_spacing > 0.0) {
+    header.workspace.grid_enabled = true;
+    header.workspace.grid_spacing = options.grid_spacing;
+  }
+  header.workspace.mirror_enabled = options.mirror;
+  header.source = {{"input", "openxr"}, {"runtime", xr.runtime_name()}, {"stack", stack.name},
+                   {"config", std::filesystem::absolute(options.config).string()}};
+  auto live = std::make_unique<LiveSession>(header, std::vector<StackInstance>{instance}, recording,
+                                            options.overwrite);
+  CorrectionWorker worker(std::move(live), 0);
+  openxr::GestureInterpreter input(settings, header.workspace);
+  viewer::SceneStyle style;
+  style.multisamples = 0;
+  style.background = {0.93, 0.94, 0.96};
+  VrScene scene(eyes->renderer(), style);
+  std::uint64_t shown_version = 0;
+
+  out << "sketchlab vr: drawing with stack '" << stack.name << "' on OpenXR runtime '" << xr.runtime_name()
+      << "', recording to " << recording.string() << " (Ctrl-C ends the session)\n"
+      << std::flush;
+  const InterruptGuard interrupt;
+  XrTime start = 0;
+  double seconds = 0.0;
+  bool lost = false;
+  std::vector<double> frame_ms;  // render-thread time per frame (input, scene, both eyes)
+  for (;;) {
+    if (g_interrupted) {
+      if (!xr.running()) break;
+      xr.request_exit();
+    }
+    if (!xr.poll(lost)) break;
+    if (!xr.running()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      continue;
+    }
+    const auto frame_start = std::chrono::steady_clock::now();
+    xr.frame(
+        [&](XrTime time) {
+          if (start == 0) start = time;
+          seconds = static_cast<double>(time - start) * 1e-9;
+          const openxr::ControllerFrame frame =
+              actions.poll(xr.session(), xr.base_space(), xr.view_space(), time, seconds, xr.focused());
+          for (Event& e : input.step(frame)) worker.submit(std::move(e));
+          // The latest finished correction; a slow stack shows it late.
+          if (const auto snap = worker.latest(); snap->version != shown_version) {
+            shown_version = snap->version;
+            scene.set_sketch(snap->sketch);
+          }
+          scene.update(input, frame, settings.dominant);
+        },
+        [&](int, const EyeView& view, std::uint32_t texture) {
+          eyes->render(view.position, view.orientation, view.fov, texture);
+        });
+    frame_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start).count());
+  }
+  // What was being drawn when the session ended is kept.
+  openxr::ControllerFrame last;
+  last.focused = false;
+  last.time = seconds;
+  for (Event& e : input.step(last)) worker.submit(std::move(e));
+  const auto final_sketch = worker.finish();
+  for (const auto& p : worker.problems()) err << "sketchlab vr: " << p << "\n";
+  if (!options.sketch.empty()) {
+    std::ofstream file(options.sketch);
+    file << sketch_to_json(final_sketch->sketch);
+    if (!file) throw std::runtime_error(options.sketch.string() + ": cannot write the sketch");
+  }
+  out << "sketchlab vr: " << worker.live().events_recorded() << " events recorded in " << recording.string()
+      << "\n";
+  if (!frame_ms.empty()) {
+    // Includes the runtime's xrWaitFrame (vsync on a headset).
+    std::vector<double> sorted = frame_ms;
+    std::sort(sorted.begin(), sorted.end());
+    double sum = 0.0;
+    for (double v : sorted) sum += v;
+    VrStats figures;
+    figures.frames = sorted.size();
+    figures.eye_width = eyes->width();
+    figures.eye_height = eyes->height();
+    figures.frame_mean_ms = sum / static_cast<double>(sorted.size());
+    figures.frame_p95_ms = sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)];
+    figures.frame_max_ms = sorted.back();
+    figures.events = worker.live().events_recorded();
+    out << "sketchlab vr: " << figures.frames << " frames, " << figures.eye_width << "x" << figures.eye_height
+        << " per eye; frame time mean " << figures.frame_mean_ms << " ms, p95 " << figures.frame_p95_ms
+        << " ms, max " << figures.frame_max_ms << " ms\n";
+    if (stats) *stats = figures;
+  }
+  if (lost) {
+    err << "sketchlab vr: the OpenXR runtime lost the session (headset disconnected or runtime stopped); "
+           "everything drawn is in "
+        << recording.string() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace sketchlab::vr
