@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <random>
+#include <string>
 
 #include "analytic_corrector.hpp"
 #include "demo_scenes.hpp"
@@ -22,8 +23,11 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 // About `n` scaffold segments: a lattice of 0.3 m boxes (12 edges each) on
 // the ground, seen from a tablet camera; the stroke traces a vertical edge of
-// the box nearest the viewer (noise 0.7 px, 10 in/s).
-void bench_lines(int n) {
+// the box nearest the viewer (noise 0.7 px, 10 in/s). With `arcs`, each box
+// also gets a quarter-circle Bézier on its top face (centre at its back-left
+// top corner), so every stroke end is tested against that many curves
+// (line/curve intersections, Figure 7c).
+void bench_lines(int n, bool arcs = false) {
   Sketch sketch;
   const int boxes = std::max(1, n / 12);
   const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(boxes))));
@@ -39,7 +43,16 @@ void bench_lines(int n) {
       demo::add_curve(sketch, make_line(c[ed[0]], c[ed[1]]), Layer::scaffold);
       ++added;
     }
+    if (arcs) {
+      const double handle = 0.5522847498 * b;  // cubic quarter-circle handle
+      Curve arc;
+      arc.control_points = {c[4], c[4] + handle * Vec3::UnitX(), c[6] - handle * Vec3::UnitZ(), c[6]};
+      arc.sharp = {false, false};
+      demo::add_curve(sketch, arc, Layer::scaffold);
+    }
   }
+  const std::string label =
+      std::to_string(added) + "_segments" + (arcs ? "_" + std::to_string(boxes) + "_arcs" : "");
   const View view = demo::tablet_view(Vec3(0.4, 2.0, 3.0), Vec3(0.0, 0.0, -0.5 * gap * side));
   AnalyticCorrector corrector{AnalyticParams{}};
   const int reps = 20;
@@ -56,9 +69,9 @@ void bench_lines(int n) {
     combos = c.stats.extra.count("combinations") ? c.stats.extra.at("combinations") : 0;
   }
   std::sort(times.begin(), times.end());
-  std::printf("line_inference_%d_segments_median %.3f ms\n", added, times[times.size() / 2]);
-  std::printf("line_inference_%d_segments_max %.3f ms\n", added, times.back());
-  std::printf("line_inference_%d_segments_triplets %.0f count\n", added, combos);
+  std::printf("line_inference_%s_median %.3f ms\n", label.c_str(), times[times.size() / 2]);
+  std::printf("line_inference_%s_max %.3f ms\n", label.c_str(), times.back());
+  std::printf("line_inference_%s_triplets %.0f count\n", label.c_str(), combos);
   std::fflush(stdout);
 }
 
@@ -106,6 +119,7 @@ void bench_helix(int points) {
 int main() {
   bench_lines(50);
   bench_lines(500);
+  bench_lines(500, true);
   bench_helix(5);
   bench_helix(9);
   return 0;

@@ -16,6 +16,7 @@ std::vector<ParamSpec> parameter_specs() {
       {"f_vertex", T::real, d.f_vertex, 0.0, 100.0, {}, "", "eq. 5 f(C°) at a scaffold vertex (paper: hand-tuned, 1)"},
       {"f_intersection", T::real, d.f_intersection, 0.0, 100.0, {}, "", "eq. 5 f(C°) at a guideline/line intersection (1)"},
       {"f_on_line", T::real, d.f_on_line, 0.0, 100.0, {}, "", "eq. 5 f(C°) for the nearest point on a line (0.5)"},
+      {"f_curve_intersection", T::real, d.f_curve_intersection, 0.0, 100.0, {}, "", "eq. 5 f(C°) where the stroke crosses a curve's projection (1, as f_intersection)"},
       {"f_vanishing", T::real, d.f_vanishing, 0.0, 100.0, {}, "", "eq. 5 f(Cᵈ) along an existing vanishing direction (1)"},
       {"f_through", T::real, d.f_through, 0.0, 100.0, {}, "", "eq. 5 f(Cᵈ) through a scaffold vertex (1)"},
       {"f_perpendicular", T::real, d.f_perpendicular, 0.0, 100.0, {}, "", "eq. 5 f(Cᵈ) perpendicular to a line at the start (0.8)"},
@@ -55,6 +56,7 @@ AnalyticParams params_from(const Params& p) {
   a.f_vertex = p.real("f_vertex");
   a.f_intersection = p.real("f_intersection");
   a.f_on_line = p.real("f_on_line");
+  a.f_curve_intersection = p.real("f_curve_intersection");
   a.f_vanishing = p.real("f_vanishing");
   a.f_through = p.real("f_through");
   a.f_perpendicular = p.real("f_perpendicular");

@@ -30,6 +30,7 @@ struct AnalyticParams {
   double f_vertex = 1.0;        // C°: scaffold vertex (a)
   double f_intersection = 1.0;  // C°: guideline / line intersection (b, c)
   double f_on_line = 0.5;       // C°: nearest point on a guideline or line (d)
+  double f_curve_intersection = 1.0;  // C°: stroke crosses a curve's projection (c)
   double f_vanishing = 1.0;     // Cᵈ: existing vanishing direction (h)
   double f_through = 1.0;       // Cᵈ: line through a scaffold vertex (e, f)
   double f_perpendicular = 0.8; // Cᵈ: perpendicular direction (g)

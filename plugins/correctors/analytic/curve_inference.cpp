@@ -129,13 +129,8 @@ std::vector<CurvePoint> collect_curve_points(const Scaffold& s, const Camera& ca
     for (std::size_t j = i + 1; j < s.lines.size(); ++j) {
       const ScaffoldLine& a = s.lines[i];
       const ScaffoldLine& b = s.lines[j];
-      const LineLineHit h = closest_line_line(a.a, a.direction(), b.a, b.direction());
-      if (h.parallel || h.distance > s.tolerance) continue;
-      auto inside = [&](const ScaffoldLine& l, double t) {
-        return l.guide || (t >= -s.tolerance && t <= (l.b - l.a).norm() + s.tolerance);
-      };
-      if (!inside(a, h.s) || !inside(b, h.t)) continue;
-      consider(a.a + h.s * a.direction(), {static_cast<int>(i), static_cast<int>(j)});
+      if (const std::optional<Vec3> x = scaffold_crossing(s, a, b))
+        consider(*x, {static_cast<int>(i), static_cast<int>(j)});
     }
   if (static_cast<int>(found.size()) > p.max_curve_points) {
     std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.score < b.score; });

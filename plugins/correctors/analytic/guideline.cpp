@@ -25,13 +25,10 @@ std::vector<Vec3> known_points_near(const Scaffold& s, const Camera& cam, const 
     for (std::size_t j = i + 1; j < s.lines.size(); ++j) {
       const ScaffoldLine& a = s.lines[i];
       const ScaffoldLine& b = s.lines[j];
-      const LineLineHit h = closest_line_line(a.a, a.direction(), b.a, b.direction());
-      if (h.parallel || h.distance > s.tolerance) continue;
-      if (!a.guide && (h.s < -s.tolerance || h.s > (a.b - a.a).norm() + s.tolerance)) continue;
-      if (!b.guide && (h.t < -s.tolerance || h.t > (b.b - b.a).norm() + s.tolerance)) continue;
-      const Vec3 x = a.a + h.s * a.direction();
-      const auto q = cam.project(x);
-      if (q && (*q - pixel).norm() <= radius) found.push_back({(*q - pixel).norm(), x});
+      const std::optional<Vec3> x = scaffold_crossing(s, a, b);
+      if (!x) continue;
+      const auto q = cam.project(*x);
+      if (q && (*q - pixel).norm() <= radius) found.push_back({(*q - pixel).norm(), *x});
     }
   std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Vec3> out;

@@ -6,6 +6,8 @@
 #include <map>
 #include <random>
 
+#include "curve_crossing.hpp"
+
 namespace sketchlab::analytic {
 
 namespace {
@@ -27,10 +29,6 @@ Vec3 point_of(const PointConstraint& pc, const Scaffold& s, const Ray& ray) {
   return pc.p;
 }
 
-bool within_line(const ScaffoldLine& l, double t, double tol) {
-  return l.guide || (t >= -tol && t <= (l.b - l.a).norm() + tol);
-}
-
 std::vector<int> lines_at(const PointConstraint& pc, const Scaffold& s) {
   switch (pc.type) {
     case PointConstraint::Type::vertex:
@@ -39,12 +37,16 @@ std::vector<int> lines_at(const PointConstraint& pc, const Scaffold& s) {
       return {pc.line, pc.line2};
     case PointConstraint::Type::on_line:
       return {pc.line};
+    case PointConstraint::Type::curve_intersection:
+      return {};
   }
   return {};
 }
 
+// `other` is the stroke's other endpoint pixel: the stroke's image line runs
+// through both.
 std::vector<PointConstraint> collect_points(const Scaffold& s, const Camera& cam, const StrokeEnd& end,
-                                            double radius, const AnalyticParams& p) {
+                                            const Vec2& other, double radius, const AnalyticParams& p) {
   std::vector<PointConstraint> out;
   for (std::size_t v = 0; v < s.vertices.size(); ++v) {
     const auto q = cam.project(s.vertices[v].p);
@@ -77,10 +79,9 @@ std::vector<PointConstraint> collect_points(const Scaffold& s, const Camera& cam
     for (std::size_t j = i + 1; j < near.size(); ++j) {
       const ScaffoldLine& a = s.lines[static_cast<std::size_t>(near[i])];
       const ScaffoldLine& b = s.lines[static_cast<std::size_t>(near[j])];
-      const LineLineHit h = closest_line_line(a.a, a.direction(), b.a, b.direction());
-      if (h.parallel || h.distance > s.tolerance) continue;
-      if (!within_line(a, h.s, s.tolerance) || !within_line(b, h.t, s.tolerance)) continue;
-      const Vec3 x = a.a + h.s * a.direction();
+      const std::optional<Vec3> crossing = scaffold_crossing(s, a, b);
+      if (!crossing) continue;
+      const Vec3 x = *crossing;
       bool dup = false;
       for (const PointConstraint& pc : out)
         if (pc.type == PointConstraint::Type::vertex && (pc.p - x).norm() <= 10 * s.tolerance) dup = true;
@@ -96,6 +97,24 @@ std::vector<PointConstraint> collect_points(const Scaffold& s, const Camera& cam
       pc.line = near[i];
       pc.line2 = near[j];
       pc.f = p.f_intersection;
+      out.push_back(pc);
+    }
+  }
+  // Line/curve intersections (Figure 7c): where the stroke's image line
+  // crosses a curve's projection within the radius, the curve's 3D point
+  // there. Crossings at a vertex (e.g. a curve end) are that vertex already.
+  for (std::size_t ci = 0; ci < s.curves.size(); ++ci) {
+    for (const CurveCrossing& x : curve_line_crossings(s.curves[ci].curve, cam, other, end.pixel, end.pixel, radius)) {
+      bool dup = false;
+      for (const PointConstraint& pc : out)
+        if (pc.type != PointConstraint::Type::on_line && (pc.p - x.point).norm() <= 10 * s.tolerance) dup = true;
+      if (dup) continue;
+      PointConstraint pc;
+      pc.type = PointConstraint::Type::curve_intersection;
+      pc.p = x.point;
+      pc.curve = static_cast<int>(ci);
+      pc.curve_t = x.t;
+      pc.f = p.f_curve_intersection;
       out.push_back(pc);
     }
   }
@@ -120,7 +139,7 @@ LineCandidates collect_line_candidates(const Scaffold& s, const Camera& cam, con
                                        const StrokeEnd ends[2], const AnalyticParams& p) {
   LineCandidates c;
   for (int e = 0; e < 2; ++e)
-    c.points[e] = collect_points(s, cam, ends[e], p.collect_factor * ends[e].delta, p);
+    c.points[e] = collect_points(s, cam, ends[e], ends[1 - e].pixel, p.collect_factor * ends[e].delta, p);
   // Vertices near the stroke: lines through them (Figure 7e, f).
   std::vector<int> through;
   for (std::size_t v = 0; v < s.vertices.size(); ++v) {
@@ -485,7 +504,13 @@ std::vector<Constraint> describe_triplet(const Triplet& t, const LineCandidates&
              : pc.type == PointConstraint::Type::intersection ? ConstraintKind::intersection
                                                               : ConstraintKind::point_on_curve;
     k.references.push_back(stroke_ref(end));
-    if (pc.type == PointConstraint::Type::vertex) {
+    if (pc.type == PointConstraint::Type::curve_intersection) {
+      ConstraintRef r;
+      r.kind = ConstraintRef::Kind::curve;
+      r.id = s.curves[static_cast<std::size_t>(pc.curve)].id;
+      r.parameter = pc.curve_t;
+      k.references.push_back(r);
+    } else if (pc.type == PointConstraint::Type::vertex) {
       for (int l : s.vertices[static_cast<std::size_t>(pc.vertex)].lines) k.references.push_back(curve_ref(l));
     } else {
       k.references.push_back(curve_ref(pc.line));

@@ -23,10 +23,14 @@ struct StrokeEnd {
 };
 
 struct PointConstraint {
-  enum class Type { vertex, intersection, on_line } type = Type::vertex;
-  Vec3 p = Vec3::Zero();  // vertex / intersection
+  // curve_intersection: where the stroke's image line crosses a curve's
+  // projection (Figure 7c); p is the curve's 3D point there.
+  enum class Type { vertex, intersection, on_line, curve_intersection } type = Type::vertex;
+  Vec3 p = Vec3::Zero();  // vertex / intersection / curve_intersection
   int vertex = -1;        // vertex index
   int line = -1, line2 = -1;
+  int curve = -1;         // curve_intersection: index into Scaffold::curves
+  double curve_t = 0.0;   // curve_intersection: global curve parameter
   double f = 1.0;
 };
 

@@ -141,4 +141,15 @@ LineLineHit closest_line_line(const Vec3& p, const Vec3& u, const Vec3& q, const
   return h;
 }
 
+bool within_line(const ScaffoldLine& l, double t, double tol) {
+  return l.guide || (t >= -tol && t <= (l.b - l.a).norm() + tol);
+}
+
+std::optional<Vec3> scaffold_crossing(const Scaffold& s, const ScaffoldLine& a, const ScaffoldLine& b) {
+  const LineLineHit h = closest_line_line(a.a, a.direction(), b.a, b.direction());
+  if (h.parallel || h.distance > s.tolerance) return std::nullopt;
+  if (!within_line(a, h.s, s.tolerance) || !within_line(b, h.t, s.tolerance)) return std::nullopt;
+  return Vec3(a.a + h.s * a.direction());
+}
+
 }  // namespace sketchlab::analytic

@@ -3,6 +3,7 @@
 // segments, guidelines (infinite lines), curves, their vertices and the
 // vanishing directions in use. Built fresh for every stroke from the network
 // (correctors keep no state between strokes).
+#include <optional>
 #include <vector>
 
 #include "sketchlab/sketch.hpp"
@@ -57,5 +58,14 @@ struct LineLineHit {
   bool parallel = false;
 };
 LineLineHit closest_line_line(const Vec3& p, const Vec3& u, const Vec3& q, const Vec3& v);
+
+// Whether the parameter `t` along `l` (metres from l.a) lies on it within
+// `tol`: guidelines are infinite, segments end at a and b.
+bool within_line(const ScaffoldLine& l, double t, double tol);
+
+// Where two scaffold lines meet (closer than s.tolerance, not parallel, and
+// within both segments): the point on `a`. The intersections the inference
+// snaps to (Figure 7b, c) and offers as known points.
+std::optional<Vec3> scaffold_crossing(const Scaffold& s, const ScaffoldLine& a, const ScaffoldLine& b);
 
 }  // namespace sketchlab::analytic
