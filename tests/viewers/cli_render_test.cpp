@@ -1,9 +1,9 @@
 // `sketchlab render` end to end: sketch files in, a side-by-side PNG out.
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "cli_helpers.hpp"
 #include "scenes.hpp"
 #include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/io/text_file.hpp"
@@ -14,22 +14,6 @@ using namespace sketchlab;
 using namespace sketchlab::test;
 
 namespace {
-
-struct Run {
-  int status = -1;
-  std::string output;
-};
-
-Run run(const std::string& command) {
-  Run r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
 int dark_pixels(const viewer::RgbImage& img, int x0, int x1) {
   int n = 0;
@@ -52,7 +36,7 @@ TEST_CASE("sketchlab render writes one panel per sketch", "[viewer][cli]") {
   std::filesystem::remove(png);
 
   const std::string cli = SKETCHLAB_CLI;
-  const Run ok = run(cli + " render " + (dir / "rec/a/sketch.json").string() + " " +
+  const CliRun ok = run_captured(cli + " render " + (dir / "rec/a/sketch.json").string() + " " +
                      (dir / "rec/b/sketch.json").string() + " -o " + png.string() +
                      " --size 640x360 --view front");
   INFO(ok.output);
@@ -65,12 +49,12 @@ TEST_CASE("sketchlab render writes one panel per sketch", "[viewer][cli]") {
   CHECK(dark_pixels(img, 20, 300) > 200);
   CHECK(dark_pixels(img, 340, 620) > 100);
 
-  const Run bad_size = run(cli + " render " + (dir / "rec/a/sketch.json").string() + " -o " +
+  const CliRun bad_size = run_captured(cli + " render " + (dir / "rec/a/sketch.json").string() + " -o " +
                            png.string() + " --size 640by360");
   CHECK(bad_size.status != 0);
   CHECK_THAT(bad_size.output, Catch::Contains("WIDTHxHEIGHT"));
 
-  const Run no_display = run("env -u DISPLAY " + cli + " render " +
+  const CliRun no_display = run_captured("env -u DISPLAY " + cli + " render " +
                              (dir / "rec/a/sketch.json").string() + " -o " +
                              (dir / "never.png").string());
   CHECK(no_display.status != 0);

@@ -170,6 +170,35 @@ std::vector<P> slice(const std::vector<P>& pts, const std::vector<double>& cum, 
   return out;
 }
 
+// Index of the point nearest arclength s; `cum` is cumulative(pts).
+inline std::size_t index_at(const std::vector<double>& cum, double s) {
+  const auto it = std::lower_bound(cum.begin(), cum.end(), s);
+  std::size_t i = static_cast<std::size_t>(it - cum.begin());
+  if (i >= cum.size()) return cum.size() - 1;
+  if (i > 0 && s - cum[i - 1] < cum[i] - s) --i;
+  return i;
+}
+
+// Per-point values `v` interpolated linearly at arclength s (clamped).
+inline double interp(const std::vector<double>& cum, const std::vector<double>& v, double s) {
+  if (v.size() == 1) return v[0];
+  s = std::clamp(s, 0.0, cum.back());
+  const auto it = std::upper_bound(cum.begin(), cum.end(), s);
+  if (it == cum.end()) return v.back();
+  const std::size_t i = static_cast<std::size_t>(it - cum.begin());
+  if (i == 0) return v.front();
+  const double seg = cum[i] - cum[i - 1];
+  const double u = seg > 0 ? (s - cum[i - 1]) / seg : 0.0;
+  return (1 - u) * v[i - 1] + u * v[i];
+}
+
+// Centroid of the points (zero for none).
+inline Vec3 mean(const Points3& pts) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& p : pts) c += p;
+  return pts.empty() ? c : Vec3(c / static_cast<double>(pts.size()));
+}
+
 inline double clamp_angle(double cosine) { return std::acos(std::clamp(cosine, -1.0, 1.0)); }
 
 }  // namespace sketchlab::justdrawit

@@ -33,18 +33,8 @@ std::vector<double> fill_depths(const std::vector<double>& cum2,
 double depth_slope(const std::vector<double>& cum2, const std::vector<double>& depth, double from,
                    double to) {
   if (cum2.size() < 2 || std::abs(to - from) < 1e-9) return 0.0;
-  const auto at = [&](double s) {
-    s = std::clamp(s, 0.0, cum2.back());
-    const auto it = std::upper_bound(cum2.begin(), cum2.end(), s);
-    if (it == cum2.end()) return depth.back();
-    const std::size_t i = static_cast<std::size_t>(it - cum2.begin());
-    if (i == 0) return depth.front();
-    const double seg = cum2[i] - cum2[i - 1];
-    const double u = seg > 0 ? (s - cum2[i - 1]) / seg : 0.0;
-    return (1 - u) * depth[i - 1] + u * depth[i];
-  };
   const double span = std::abs(to - from);
-  return (at(to) - at(from)) / span;
+  return (interp(cum2, depth, to) - interp(cum2, depth, from)) / span;
 }
 
 std::optional<Points3> lift(const Camera& cam, const Plane& plane, const Points2& stroke,

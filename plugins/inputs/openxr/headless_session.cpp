@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "xr_result.hpp"
+#include "xr_session_basics.hpp"
 
 namespace sketchlab::openxr {
 namespace {
@@ -42,11 +43,7 @@ HeadlessSession::HeadlessSession(const InputSettings& settings, const Workspace&
   if (const XrResult r = xrCreateInstance(&info, &instance_); XR_FAILED(r))
     throw XrError(r, std::string(no_runtime_hint) + " (xrCreateInstance: " + result_name(r) + ")");
   try {
-    XrInstanceProperties props{XR_TYPE_INSTANCE_PROPERTIES};
-    if (XR_SUCCEEDED(xrGetInstanceProperties(instance_, &props))) runtime_name_ = props.runtimeName;
-    XrSystemGetInfo sys{XR_TYPE_SYSTEM_GET_INFO};
-    sys.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    if (const XrResult r = xrGetSystem(instance_, &sys, &system_); XR_FAILED(r))
+    if (const XrResult r = find_headset(instance_, runtime_name_, system_); XR_FAILED(r))
       throw XrError(r, "OpenXR runtime '" + runtime_name_ + "' has no headset (" + result_name(r) +
                            "): connect and switch on the headset");
     actions_ = std::make_unique<ControllerActions>(instance_, settings);
@@ -56,15 +53,7 @@ HeadlessSession::HeadlessSession(const InputSettings& settings, const Workspace&
       throw XrError(r, "OpenXR runtime '" + runtime_name_ + "' refused the session (" + result_name(r) +
                            "): close other VR applications and check the headset");
     actions_->attach(session_);
-    XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space.poseInReferenceSpace.orientation.w = 1.0f;
-    space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_STAGE;
-    if (XR_FAILED(xrCreateReferenceSpace(session_, &space, &base_))) {
-      space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
-      check(xrCreateReferenceSpace(session_, &space, &base_), "xrCreateReferenceSpace(LOCAL)");
-    }
-    space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-    check(xrCreateReferenceSpace(session_, &space, &view_), "xrCreateReferenceSpace(VIEW)");
+    create_reference_spaces(session_, base_, view_);
   } catch (...) {
     actions_.reset();
     if (session_ != XR_NULL_HANDLE) xrDestroySession(session_);
@@ -87,17 +76,7 @@ bool HeadlessSession::poll_state() {
     if (event.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) return false;
     if (event.type == XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) {
       state_ = reinterpret_cast<const XrEventDataSessionStateChanged&>(event).state;
-      if (state_ == XR_SESSION_STATE_READY) {
-        XrSessionBeginInfo begin{XR_TYPE_SESSION_BEGIN_INFO};
-        begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
-        check(xrBeginSession(session_, &begin), "xrBeginSession");
-        running_ = true;
-      } else if (state_ == XR_SESSION_STATE_STOPPING) {
-        check(xrEndSession(session_), "xrEndSession");
-        running_ = false;
-      } else if (state_ == XR_SESSION_STATE_EXITING || state_ == XR_SESSION_STATE_LOSS_PENDING) {
-        return false;
-      }
+      if (!follow_session_state(session_, state_, running_)) return false;
     }
     event = {XR_TYPE_EVENT_DATA_BUFFER};
   }

@@ -6,31 +6,17 @@
 #include <cmath>
 #include <filesystem>
 
+#include "session_fixtures.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 
 namespace {
 
 using namespace sketchlab;
-
-class FitCorrector : public Corrector {
- public:
-  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
-    Correction c;
-    c.edit = freehand_edit(stroke, sketch, {});
-    return c;
-  }
-};
+using test::FitCorrector;
+using test::sampled_stroke;
 
 Stroke arc_stroke(StrokeId id, double y) {
-  Stroke s;
-  s.id = id;
-  for (int i = 0; i < 25; ++i) {
-    Sample sample;
-    sample.position = Vec3(0.01 * i, y + 0.002 * std::sin(i), 0.0);
-    sample.time = id + 0.01 * i;
-    s.samples.push_back(sample);
-  }
-  return s;
+  return sampled_stroke(id, 25, id, 0.01, [&](int i) -> Vec3 { return Vec3(0.01 * i, y + 0.002 * std::sin(i), 0.0); });
 }
 
 std::filesystem::path temp_recording(const std::string& name) {

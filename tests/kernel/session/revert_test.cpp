@@ -4,34 +4,21 @@
 #include <cmath>
 #include <random>
 
+#include "session_fixtures.hpp"
 #include "sketchlab/session.hpp"
 
 namespace {
 
 using namespace sketchlab;
-
-class FitCorrector : public Corrector {
- public:
-  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
-    Correction c;
-    c.edit = freehand_edit(stroke, sketch, {});
-    return c;
-  }
-};
+using test::FitCorrector;
+using test::sampled_stroke;
 
 Stroke wobbly_stroke(StrokeId id, const Vec3& origin, std::mt19937_64& rng) {
   std::normal_distribution<double> noise(0.0, 0.001);
-  Stroke s;
-  s.id = id;
-  for (int i = 0; i < 30; ++i) {
+  return sampled_stroke(id, 30, id, 0.01, [&](int i) -> Vec3 {
     const double u = i / 29.0;
-    Sample sample;
-    sample.position = origin + Vec3(0.3 * u, 0.04 * std::sin(4 * u), 0.0) +
-                      Vec3(noise(rng), noise(rng), noise(rng));
-    sample.time = id + 0.01 * i;
-    s.samples.push_back(sample);
-  }
-  return s;
+    return origin + Vec3(0.3 * u, 0.04 * std::sin(4 * u), 0.0) + Vec3(noise(rng), noise(rng), noise(rng));
+  });
 }
 
 // A mix of every event kind a session folds, including refused ones

@@ -4,21 +4,13 @@
 #include <cmath>
 #include <random>
 
+#include "session_fixtures.hpp"
+
 namespace {
 
 using namespace sketchlab;
-
-// The freehand baseline as a plain corrector (no plugin loading needed).
-class FitCorrector : public Corrector {
- public:
-  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
-    ++calls;
-    Correction c;
-    c.edit = freehand_edit(stroke, sketch, {});
-    return c;
-  }
-  int calls = 0;
-};
+using test::FitCorrector;
+using test::sampled_stroke;
 
 class FailingCorrector : public Corrector {
  public:
@@ -32,17 +24,10 @@ class FailingCorrector : public Corrector {
 // A wobbly 3D stroke of ~30 cm starting at `origin`.
 Stroke make_stroke(StrokeId id, const Vec3& origin, std::mt19937_64& rng) {
   std::normal_distribution<double> noise(0.0, 0.001);
-  Stroke s;
-  s.id = id;
-  for (int i = 0; i < 40; ++i) {
+  return sampled_stroke(id, 40, id, 0.01, [&](int i) -> Vec3 {
     const double u = i / 39.0;
-    Sample sample;
-    sample.position = origin + Vec3(0.3 * u, 0.05 * std::sin(3 * u), 0.02 * u) +
-                      Vec3(noise(rng), noise(rng), noise(rng));
-    sample.time = id + 0.01 * i;
-    s.samples.push_back(sample);
-  }
-  return s;
+    return origin + Vec3(0.3 * u, 0.05 * std::sin(3 * u), 0.02 * u) + Vec3(noise(rng), noise(rng), noise(rng));
+  });
 }
 
 Event at(double t, EventPayload p) { return Event{t, std::move(p)}; }

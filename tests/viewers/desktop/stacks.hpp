@@ -2,6 +2,7 @@
 // The stacks of configs/compare.yaml, built from the plugins of this build.
 #include <vector>
 
+#include "build_plugin_host.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/run/stack.hpp"
@@ -9,19 +10,10 @@
 
 namespace sketchlab::test {
 
-inline const PluginHost& plugin_host() {
-  static const PluginHost host = [] {
-    PluginHost h;
-    h.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-    return h;
-  }();
-  return host;
-}
-
 inline std::vector<StackInstance> compare_stacks() {
   std::vector<StackInstance> out;
   for (const StackConfig& c : load_experiment(source_path("configs/compare.yaml")).stacks)
-    out.push_back(instantiate_stack(c, plugin_host()));
+    out.push_back(instantiate_stack(c, build_plugin_host()));
   return out;
 }
 

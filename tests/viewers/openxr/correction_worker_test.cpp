@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "correction_worker.hpp"
+#include "session_fixtures.hpp"
 #include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 
@@ -20,14 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class SlowCorrector : public Corrector {
+// The freehand fit, `ms` milliseconds late.
+class SlowCorrector : public test::FitCorrector {
  public:
   explicit SlowCorrector(int ms) : ms_(ms) {}
   Correction correct(const Stroke& stroke, const Sketch& sketch) override {
     std::this_thread::sleep_for(std::chrono::milliseconds(ms_));
-    Correction c;
-    c.edit = freehand_edit(stroke, sketch, PreprocessParams{});
-    return c;
+    return FitCorrector::correct(stroke, sketch);
   }
 
  private:
@@ -35,14 +35,7 @@ class SlowCorrector : public Corrector {
 };
 
 Event stroke_event(StrokeId id, double y) {
-  Stroke s;
-  s.id = id;
-  for (int i = 0; i < 10; ++i) {
-    Sample p;
-    p.position = Vec3(0.02 * i, y, 0.0);
-    p.time = 0.1 * id + 0.001 * i;
-    s.samples.push_back(p);
-  }
+  const Stroke s = test::sampled_stroke(id, 10, 0.1 * id, 0.001, [&](int i) -> Vec3 { return Vec3(0.02 * i, y, 0.0); });
   return {0.1 * id + 0.01, StrokeEvent{s}};
 }
 

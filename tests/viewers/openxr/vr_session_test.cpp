@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_helpers.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/io/sketch_json.hpp"
@@ -30,27 +31,13 @@
 #ifdef SKETCHLAB_TEST_XR_RUNTIME_JSON
 
 using namespace sketchlab;
+using sketchlab::test::CliRun;
+using sketchlab::test::run_captured;
 namespace fs = std::filesystem;
 
 namespace {
 
 constexpr double dt = 1.0 / 90.0;
-
-struct Run {
-  int status = -1;
-  std::string output;
-};
-
-Run run(const std::string& command) {
-  Run r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
 fs::path fresh_dir(const std::string& name) {
   const auto dir = fs::temp_directory_path() / ("sketchlab_vr_" + name + "_" + std::to_string(getpid()));
@@ -264,7 +251,7 @@ TEST_CASE("a scripted VR session records exactly what was done and replays ident
   const auto dumps = dir / "frames";
   fs::create_directories(dumps);
   const Scenario sc = write_script(dir / "script.txt", dumps);
-  const Run r = run(vr_command(dir / "script.txt", dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
+  const CliRun r = run_captured(vr_command(dir / "script.txt", dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
   INFO(r.output);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.output, Catch::Contains("4 events recorded"));
@@ -314,7 +301,7 @@ TEST_CASE("a scripted VR session records exactly what was done and replays ident
     std::ofstream(dir / "replay.yaml") << "experiment: vr-replay\nrecordings: [vr.jsonl]\n"
                                           "stacks:\n  - name: cassie\n    corrector: {plugin: cassie, params: {mirror: plane}}\n"
                                           "outputs: {dir: runs, timestamp: false}\n";
-    const Run ran = run("cd " + dir.string() + " && " SKETCHLAB_CLI " run replay.yaml --no-timings");
+    const CliRun ran = run_captured("cd " + dir.string() + " && " SKETCHLAB_CLI " run replay.yaml --no-timings");
     INFO(ran.output);
     REQUIRE(ran.status == 0);
     std::ifstream cli_file(dir / "runs/vr-replay/vr/cassie/sketch.json");
@@ -374,7 +361,7 @@ TEST_CASE("focus loss and session loss keep what was drawn", "[openxr][viewer]")
   SECTION("focus lost mid-stroke: the stroke ends there, a button held across the loss does not fire") {
     // Input goes away from frame 15 to 25 (the runtime reports VISIBLE).
     write("option unfocus_at 15\noption refocus_at 25");
-    const Run r = run(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
+    const CliRun r = run_captured(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
     INFO(r.output);
     REQUIRE(r.status == 0);
     const Recording rec = read_recording(dir / "vr.jsonl");
@@ -388,7 +375,7 @@ TEST_CASE("focus loss and session loss keep what was drawn", "[openxr][viewer]")
   }
   SECTION("session lost: exit status 1 with a message, the recording keeps the stroke") {
     write("option lose_at 20");
-    const Run r = run(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
+    const CliRun r = run_captured(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON));
     INFO(r.output);
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains("lost the session") && Catch::Contains("vr.jsonl"));
@@ -407,7 +394,7 @@ TEST_CASE("the grid near the hand and the mirror plane are drawn when the worksp
   fs::create_directories(dumps);
   std::ofstream(dir / "script.txt") << "option eye_size 320 240\noption fov 45 36\noption dump_dir " << dumps.string()
                                     << "\nframe 3 head=0.5,1.5,0.6 left=-0.6,1.0,0.4 right=0.1,1.45,0\nframe dump\n";
-  const Run r = run(vr_command(dir / "script.txt", dir, SKETCHLAB_TEST_XR_RUNTIME_JSON) + " --grid 0.1 --mirror");
+  const CliRun r = run_captured(vr_command(dir / "script.txt", dir, SKETCHLAB_TEST_XR_RUNTIME_JSON) + " --grid 0.1 --mirror");
   INFO(r.output);
   REQUIRE(r.status == 0);
   const Recording rec = read_recording(dir / "vr.jsonl");
@@ -453,7 +440,7 @@ TEST_CASE("VR failures print one message saying what is missing and exit cleanly
   const auto script = dir / "script.txt";
   auto expect = [&](const std::string& options, const std::string& runtime, const std::string& message) {
     std::ofstream(script) << options << "frame 5\n";
-    const Run r = run(vr_command(script, dir, runtime));
+    const CliRun r = run_captured(vr_command(script, dir, runtime));
     INFO(r.output);
     CHECK(r.status == 1);
     CHECK_THAT(r.output, Catch::Contains(message));

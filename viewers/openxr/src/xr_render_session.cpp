@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "xr_result.hpp"
+#include "xr_session_basics.hpp"
 
 namespace sketchlab::vr {
 
@@ -59,11 +60,7 @@ XrRenderSession::XrRenderSession() {
     throw XrError(r, std::string("the OpenXR runtime failed to start (xrCreateInstance: ") + result_name(r) +
                          "): " + runtime_hint);
   try {
-    XrInstanceProperties props{XR_TYPE_INSTANCE_PROPERTIES};
-    if (XR_SUCCEEDED(xrGetInstanceProperties(instance_, &props))) runtime_name_ = props.runtimeName;
-    XrSystemGetInfo sys{XR_TYPE_SYSTEM_GET_INFO};
-    sys.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    if (const XrResult r = xrGetSystem(instance_, &sys, &system_); XR_FAILED(r))
+    if (const XrResult r = openxr::find_headset(instance_, runtime_name_, system_); XR_FAILED(r))
       throw XrError(r, "the OpenXR runtime '" + runtime_name_ + "' reports no headset (" + result_name(r) +
                            "): connect and switch on the headset (and start the runtime's service, e.g. "
                            "monado-service or SteamVR)");
@@ -117,16 +114,7 @@ void XrRenderSession::start(const GlxHandles& gl) {
                          "): close other VR applications, check that the headset is connected and awake, "
                          "and that the runtime supports OpenGL on X11");
 
-  XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-  space.poseInReferenceSpace.orientation.w = 1.0f;
-  space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_STAGE;
-  if (XR_FAILED(xrCreateReferenceSpace(session_, &space, &base_))) {
-    // Seated setups without a play area have no stage.
-    space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
-    check(xrCreateReferenceSpace(session_, &space, &base_), "xrCreateReferenceSpace(LOCAL)");
-  }
-  space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-  check(xrCreateReferenceSpace(session_, &space, &view_), "xrCreateReferenceSpace(VIEW)");
+  openxr::create_reference_spaces(session_, base_, view_);
 
   uint32_t n = 0;
   check(xrEnumerateSwapchainFormats(session_, 0, &n, nullptr), "xrEnumerateSwapchainFormats");
@@ -171,18 +159,8 @@ bool XrRenderSession::poll(bool& lost) {
         return false;
       case XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED: {
         state_ = reinterpret_cast<const XrEventDataSessionStateChanged&>(event).state;
-        if (state_ == XR_SESSION_STATE_READY) {
-          XrSessionBeginInfo begin{XR_TYPE_SESSION_BEGIN_INFO};
-          begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
-          check(xrBeginSession(session_, &begin), "xrBeginSession");
-          running_ = true;
-        } else if (state_ == XR_SESSION_STATE_STOPPING) {
-          check(xrEndSession(session_), "xrEndSession");
-          running_ = false;
-        } else if (state_ == XR_SESSION_STATE_LOSS_PENDING) {
-          lost = true;
-          return false;
-        } else if (state_ == XR_SESSION_STATE_EXITING) {
+        if (!openxr::follow_session_state(session_, state_, running_)) {
+          lost = state_ == XR_SESSION_STATE_LOSS_PENDING;
           return false;
         }
         break;

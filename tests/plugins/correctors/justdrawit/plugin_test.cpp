@@ -2,6 +2,7 @@
 // bundled stack file, and 2D (pixel) strokes.
 #include <catch2/catch.hpp>
 
+#include "build_plugin_host.hpp"
 #include "jdi_fixture.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
@@ -10,19 +11,8 @@
 
 using namespace jdi_test;
 
-namespace {
-PluginHost& host() {
-  static PluginHost h = [] {
-    PluginHost p;
-    p.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-    return p;
-  }();
-  return h;
-}
-}  // namespace
-
 TEST_CASE("The justdrawit plugin loads with its defaults and the bundled stack", "[justdrawit][plugin]") {
-  const LoadedPlugin* p = host().find(PluginKind::corrector, "justdrawit");
+  const LoadedPlugin* p = test::build_plugin_host().find(PluginKind::corrector, "justdrawit");
   REQUIRE(p);
   const Params defaults = validate_params(p->descriptor->params, {});
   const JdiParams jp = jdi_params_from(defaults);
@@ -32,7 +22,7 @@ TEST_CASE("The justdrawit plugin loads with its defaults and the bundled stack",
   CHECK_THROWS_AS(validate_params(p->descriptor->params, {{"surface", std::string("sphere")}}), ParamError);
 
   const StackInstance stack =
-      instantiate_stack(load_stack(test::source_path("configs/stacks/justdrawit.yaml")), host());
+      instantiate_stack(load_stack(test::source_path("configs/stacks/justdrawit.yaml")), test::build_plugin_host());
   REQUIRE(stack.corrector);
   CHECK(stack.corrector->stroke_space() == StrokeSpace::pixels);
   Sketch sketch;

@@ -2,35 +2,21 @@
 // loader and the test runtime: `sketchlab record --input openxr`.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
+#include <unistd.h>
 
+#include "cli_helpers.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 
 #ifdef SKETCHLAB_TEST_XR_RUNTIME_JSON
 
 using namespace sketchlab;
+using sketchlab::test::CliRun;
+using sketchlab::test::run_captured;
 
 namespace {
-
-struct Run {
-  int status = -1;
-  std::string output;
-};
-
-Run run(const std::string& command) {
-  Run r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
 std::filesystem::path fresh_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("sketchlab_xr_input_" + name + "_" + std::to_string(getpid()));
@@ -57,7 +43,7 @@ TEST_CASE("record --input openxr reads the scripted controllers through the load
          "frame 2 left/input/x/click=0\n";
   }
   const auto out = dir / "rec.jsonl";
-  const Run r = run(env(script) + SKETCHLAB_CLI " record --input openxr -o " + out.string());
+  const CliRun r = run_captured(env(script) + SKETCHLAB_CLI " record --input openxr -o " + out.string());
   INFO(r.output);
   REQUIRE(r.status == 0);
   const Recording rec = read_recording(out);
@@ -78,7 +64,7 @@ TEST_CASE("without XR_MND_headless the input says to use `sketchlab vr`", "[open
   const auto dir = fresh_dir("noheadless");
   const auto script = dir / "script.txt";
   std::ofstream(script) << "option headless 0\nframe 2\n";
-  const Run r = run(env(script) + SKETCHLAB_CLI " record --input openxr -o " + (dir / "rec.jsonl").string());
+  const CliRun r = run_captured(env(script) + SKETCHLAB_CLI " record --input openxr -o " + (dir / "rec.jsonl").string());
   CHECK(r.status == 1);
   CHECK_THAT(r.output, Catch::Contains("XR_MND_headless") && Catch::Contains("sketchlab vr"));
   std::filesystem::remove_all(dir);

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "build_plugin_host.hpp"
 #include "mesh_topology.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
@@ -13,21 +14,8 @@
 
 using namespace sketchlab;
 
-namespace {
-
-PluginHost& host() {
-  static PluginHost h = [] {
-    PluginHost p;
-    p.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-    return p;
-  }();
-  return h;
-}
-
-}  // namespace
-
 TEST_CASE("the hermite_rbf plugin loads with the paper's defaults", "[hermite_rbf][plugin]") {
-  const LoadedPlugin* p = host().find(PluginKind::surfacer, "hermite_rbf");
+  const LoadedPlugin* p = test::build_plugin_host().find(PluginKind::surfacer, "hermite_rbf");
   REQUIRE(p);
   auto param = [&](const std::string& name) {
     for (const ParamSpec& s : p->descriptor->params)
@@ -40,11 +28,12 @@ TEST_CASE("the hermite_rbf plugin loads with the paper's defaults", "[hermite_rb
   CHECK(std::get<double>(param("tangent_change")) == 0.4);
   CHECK(std::get<double>(param("normal_change")) == 0.1);
   CHECK(std::get<std::int64_t>(param("intersection_window")) == 10);
-  CHECK_THROWS(host().make_surfacer("hermite_rbf", {{"resolution", std::int64_t{2}}}));
+  CHECK_THROWS(test::build_plugin_host().make_surfacer("hermite_rbf", {{"resolution", std::int64_t{2}}}));
 }
 
 TEST_CASE("replaying a CASSIE session builds the surface once at the end", "[hermite_rbf][plugin][slow]") {
-  const StackInstance stack = instantiate_stack(load_stack(test::source_path("configs/stacks/cassie-hermite_rbf.yaml")), host());
+  const StackInstance stack = instantiate_stack(
+      load_stack(test::source_path("configs/stacks/cassie-hermite_rbf.yaml")), test::build_plugin_host());
   RecordingInput input(read_recording(test::source_path("data/recordings/hat.jsonl")));
   const ReplayResult r = replay(input, stack);
   REQUIRE(!r.steps.empty());
