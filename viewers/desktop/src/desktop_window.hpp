@@ -23,6 +23,9 @@
 
 namespace sketchlab::desktop {
 
+// Height of the replay timeline at the bottom of the window, in pixels.
+constexpr int timeline_height = 14;
+
 struct WindowOptions {
   ViewOptions options;
 };
@@ -34,6 +37,9 @@ struct DrawPlane {
   bool visible = true;
 };
 
+// The window's members are split by concept: events and the loop in
+// desktop_window.cpp, the scene in desktop_window_scene.cpp, files in
+// desktop_window_outputs.cpp.
 class DesktopWindow {
  public:
   DesktopWindow(ViewerModel& model, std::shared_ptr<PointerInput> input,
