@@ -1,6 +1,7 @@
 #include "irls_solver.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +12,8 @@ namespace {
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+constexpr double anchor_floor = 1e-6;  // 1/m²: the anchor when no term has any weight
 
 double weighted_cost(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& w,
                      const Vec3& a, const Vec3& b, const Vec3& a0, const Vec3& b0, double anchor) {
@@ -27,51 +30,73 @@ std::vector<double> energies_at(const std::vector<ScaffoldTerm>& terms, const Ve
   return e;
 }
 
+// Gauss–Newton normal equations of Σ w_i |r_i|² from the factored
+// Jacobians J_i = [fa·m, fb·m]: JᵀJ has blocks f f'·mᵀm, Jᵀr = (fa, fb)·mᵀr.
+void normal_equations(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& weights,
+                      const Vec3& a, const Vec3& b, Mat6& h, Vec6& g) {
+  h.setZero();
+  g.setZero();
+  Vec3 r;
+  Mat3 m;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    if (weights[i] <= 0) continue;
+    double fa = 0, fb = 0;
+    const int rows = term_linearisation(terms[i], a, b, r, m, fa, fb);
+    Mat3 mtm;
+    Vec3 mtr;
+    if (rows == 1) {
+      const Vec3 row = m.row(0).transpose();
+      mtm = weights[i] * (row * row.transpose());
+      mtr = (weights[i] * r.x()) * row;
+    } else {
+      mtm = weights[i] * (m.transpose() * m);
+      mtr = weights[i] * (m.transpose() * r);
+    }
+    h.topLeftCorner<3, 3>() += (fa * fa) * mtm;
+    h.topRightCorner<3, 3>() += (fa * fb) * mtm;
+    h.bottomRightCorner<3, 3>() += (fb * fb) * mtm;
+    g.head<3>() += fa * mtr;
+    g.tail<3>() += fb * mtr;
+  }
+  h.bottomLeftCorner<3, 3>() = h.topRightCorner<3, 3>().transpose();
+}
+
 }  // namespace
 
 int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& weights,
-                      Vec3& a, Vec3& b, const Vec3& a0, const Vec3& b0, double anchor,
+                      Vec3& a, Vec3& b, const Vec3& a0, const Vec3& b0, double anchor_ratio,
                       int max_steps) {
+  Mat6 h;
+  Vec6 g;
+  normal_equations(terms, weights, a, b, h, g);
+  // The anchor is a fixed fraction of the stiffest term's curvature, so it
+  // scales with the IRLS weights (up to 1/ε): negligible for every kept term
+  // (it moves a satisfied one by ~anchor_ratio times the distance to the
+  // input), yet no longer below the damping and the rounding of the
+  // gradient, which a direction no term constrains used to follow (issue
+  // #18: after 61 strokes a line had moved 73 m).
+  const double anchor = std::max(anchor_floor, anchor_ratio * h.diagonal().maxCoeff());
   double lambda = 1e-6;
   double cost = weighted_cost(terms, weights, a, b, a0, b0, anchor);
   int steps = 0;
-  Vec3 r;
-  Mat3 m;
   while (steps < max_steps && cost > 0) {
-    // Gauss–Newton normal equations from the factored Jacobians
-    // J_i = [fa·m, fb·m]: JᵀJ has blocks f f'·mᵀm, Jᵀr = (fa, fb)·mᵀr.
-    Mat6 h = anchor * Mat6::Identity();
-    Vec6 g;
-    g << anchor * (a - a0), anchor * (b - b0);
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-      if (weights[i] <= 0) continue;
-      double fa = 0, fb = 0;
-      const int rows = term_linearisation(terms[i], a, b, r, m, fa, fb);
-      Mat3 mtm;
-      Vec3 mtr;
-      if (rows == 1) {
-        const Vec3 row = m.row(0).transpose();
-        mtm = weights[i] * (row * row.transpose());
-        mtr = (weights[i] * r.x()) * row;
-      } else {
-        mtm = weights[i] * (m.transpose() * m);
-        mtr = weights[i] * (m.transpose() * r);
-      }
-      h.topLeftCorner<3, 3>() += (fa * fa) * mtm;
-      h.topRightCorner<3, 3>() += (fa * fb) * mtm;
-      h.bottomRightCorner<3, 3>() += (fb * fb) * mtm;
-      g.head<3>() += fa * mtr;
-      g.tail<3>() += fb * mtr;
-    }
-    h.bottomLeftCorner<3, 3>() = h.topRightCorner<3, 3>().transpose();
-    // Isotropic floor on the damping: directions no term constrains get
-    // (numerically) zero steps instead of rounding noise over a tiny pivot.
-    const double floor = 1e-14 * std::max(h.diagonal().maxCoeff(), 1e-300);
+    h.diagonal().array() += anchor;
+    g.head<3>() += anchor * (a - a0);
+    g.tail<3>() += anchor * (b - b0);
+    // Isotropic (Levenberg) damping: a multiple of the identity shares the
+    // eigenvectors of JᵀWJ, so a damped step never mixes a constrained
+    // direction into a free one. Marquardt's diag(JᵀWJ) does unless the line
+    // is axis-aligned, and where the cost is flat nothing undoes the mix:
+    // that collapsed a 12.7 cm line with a snapped start and a parallel term
+    // to microns (issue #18). The solve is also independent of the world
+    // axes now (§3.2: "no assumptions regarding world-space axes"). All six
+    // unknowns are metres, so one scale serves.
+    const double scale = h.diagonal().maxCoeff();
     bool accepted = false;
     Vec6 delta = Vec6::Zero();
     for (int attempt = 0; attempt < 30 && !accepted; ++attempt) {
       Mat6 damped = h;
-      for (int k = 0; k < 6; ++k) damped(k, k) += lambda * h(k, k) + floor;
+      damped.diagonal().array() += lambda * scale;
       delta = damped.ldlt().solve(-g);
       if (!delta.allFinite()) {
         lambda *= 10;
@@ -97,8 +122,9 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
       }
     }
     ++steps;
-    const double scale = 1.0 + std::max(a.norm(), b.norm());
-    if (!accepted || delta.norm() <= 1e-15 * scale) break;
+    const double size = 1.0 + std::max(a.norm(), b.norm());
+    if (!accepted || delta.norm() <= 1e-15 * size) break;
+    normal_equations(terms, weights, a, b, h, g);
   }
   return steps;
 }
@@ -166,6 +192,50 @@ MergedTerms merge_terms(const std::vector<ScaffoldTerm>& terms) {
   return m;
 }
 
+// The second, lexicographic stage of eq. 6 with its anchor: among the lines
+// satisfying the kept terms (weights > 0), the one closest to the input.
+// Gauss–Newton on the kept residuals whose step, in the null space of their
+// Jacobian, is the anchor's own step: δ = −(JᵀWJ)⁺JᵀWr + N Nᵀ(x0 − x). The
+// penalty form alone crawls along a curved free set (a length held by
+// equal-length terms while the line turns about a snapped end: millimetres
+// left after 200 steps); here the next step's Gauss–Newton part removes the
+// curvature error of the last, so a few steps suffice. Kept only if every
+// kept term is still satisfied (C <= ε).
+int keep_free_directions_drawn(const std::vector<ScaffoldTerm>& terms,
+                               const std::vector<double>& weights, double eps, Vec3& a, Vec3& b,
+                               const Vec3& a0, const Vec3& b0) {
+  Vec3 x_a = a, x_b = b;
+  Mat6 h;
+  Vec6 g;
+  int steps = 0;
+  for (; steps < 20; ++steps) {
+    normal_equations(terms, weights, x_a, x_b, h, g);
+    const Eigen::SelfAdjointEigenSolver<Mat6> es(h);
+    const double top = std::max(es.eigenvalues().maxCoeff(), 0.0);
+    Vec6 pull;
+    pull << a0 - x_a, b0 - x_b;
+    Vec6 delta = Vec6::Zero();
+    for (int k = 0; k < 6; ++k) {
+      const auto v = es.eigenvectors().col(k);
+      const double sigma = es.eigenvalues()(k);
+      if (sigma > 1e-12 * top && top > 0) delta -= v * (v.dot(g) / sigma);  // singular values 1e-6
+      else delta += v * v.dot(pull);
+    }
+    if (!delta.allFinite()) return steps;
+    x_a += delta.head<3>();
+    x_b += delta.tail<3>();
+    if (delta.norm() <= 1e-13 * (1.0 + std::max(x_a.norm(), x_b.norm()))) break;
+  }
+  bool kept = x_a.allFinite() && x_b.allFinite();
+  for (std::size_t i = 0; kept && i < terms.size(); ++i)
+    kept = weights[i] <= 0 || term_energy(terms[i], x_a, x_b) <= eps;
+  if (kept) {
+    a = x_a;
+    b = x_b;
+  }
+  return steps;
+}
+
 }  // namespace
 
 IrlsResult solve_irls(const std::vector<ScaffoldTerm>& input_terms, const Vec3& a0,
@@ -220,6 +290,7 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& input_terms, const Vec3& 
     a = pa;
     b = pb;
   }
+  result.solver_steps += keep_free_directions_drawn(terms, objective_weight, eps, a, b, a0, b0);
   const double input_length = (b0 - a0).norm();
   if (!a.allFinite() || !b.allFinite() || (b - a).norm() < 1e-9 * std::max(input_length, 1.0)) {
     a = a0;  // collapsed or diverged: keep what the user drew

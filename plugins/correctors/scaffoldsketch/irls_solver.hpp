@@ -26,14 +26,16 @@ struct IrlsResult {
 };
 
 // Minimises Σ w_i C_i(l) (eq. 6) from (a, b) in place with Levenberg–
-// Marquardt on the residuals of term_residual, plus anchor·(|a−a0|² + |b−b0|²)
-// (1/m²). Eq. 6 alone leaves directions no term constrains free (a line with
-// only direction terms may stretch without bound); the tiny anchor picks the
-// solution closest to what the user drew without moving satisfied terms
-// measurably. Returns the number of steps taken.
+// Marquardt on the residuals of term_residual, plus μ·(|a−a0|² + |b−b0|²)
+// with μ = anchor_ratio · (largest diagonal entry of JᵀWJ at the start),
+// at least 1e-6 (1/m²). Eq. 6 alone leaves the directions its terms do not
+// constrain free (a line with a snapped end and level terms may turn about
+// that end, one with only direction terms may stretch); the anchor holds
+// them where the user drew them, and moves a satisfied term by about
+// anchor_ratio times the distance to the input. Returns the number of steps.
 int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<double>& weights,
-                      Vec3& a, Vec3& b, const Vec3& a0, const Vec3& b0, double anchor = 1e-6,
-                      int max_steps = 200);
+                      Vec3& a, Vec3& b, const Vec3& a0, const Vec3& b0,
+                      double anchor_ratio = 1e-12, int max_steps = 200);
 
 // IRLS: weights start at w0_i / (ε + C_i(l_input)) with w0 = 100 for
 // point–point and 1 otherwise (the input line is iteration 0 of eq. 7, which
@@ -42,8 +44,10 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
 // It stops when the set of satisfied terms (C_i <= ε) and the endpoints stop
 // changing. The limit of the weights is binary (∞ satisfied, 0 discarded), so
 // a final solve with the discarded terms' weights set to 0 makes the
-// satisfied ones exact. Never returns NaN: a non-finite or collapsed solution
-// falls back to the input line with nothing enforced.
+// satisfied ones exact; then, in every direction the satisfied terms leave
+// free, the line is moved back to where it was drawn (the nearest line to
+// the input that satisfies them). Never returns NaN: a non-finite or
+// collapsed solution falls back to the input line with nothing enforced.
 IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, const Vec3& b0,
                       const IrlsOptions& options);
 

@@ -177,6 +177,17 @@ std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, cons
   // Point terms (eq. 1, 2), per point of l.
   std::vector<LinePoint> points{LinePoint::start, LinePoint::end};
   if (params.midpoint_snapping) points.push_back(LinePoint::middle);
+  // One keypoint is a candidate for one point of l only, the nearest (ties:
+  // start, end, middle). Two points of l held at one keypoint make l a point:
+  // an 8 cm line whose start and midpoint were both within 5 cm of the same
+  // corner became 3 nm long (issue #18).
+  auto claimed_elsewhere = [&](LinePoint at, const Vec3& keypoint) {
+    const double own = (line_point(at, a, b) - keypoint).squaredNorm();
+    return std::any_of(points.begin(), points.end(), [&](LinePoint other) {
+      const double d = (line_point(other, a, b) - keypoint).squaredNorm();
+      return other != at && (d < own || (d == own && other < at));
+    });
+  };
   for (LinePoint at : points) {
     const Vec3 x = line_point(at, a, b);
     std::vector<Vec3> seen;
@@ -186,7 +197,7 @@ std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, cons
       const bool duplicate = std::any_of(seen.begin(), seen.end(), [&](const Vec3& s) {
         return (s - hit.position).norm() <= 1e-12;
       });
-      if (duplicate) continue;
+      if (duplicate || claimed_elsewhere(at, hit.position)) continue;
       seen.push_back(hit.position);
       ScaffoldTerm t;
       t.kind = TermKind::point_point;

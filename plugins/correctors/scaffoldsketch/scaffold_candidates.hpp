@@ -58,8 +58,10 @@ int term_linearisation(const ScaffoldTerm& term, const Vec3& a, const Vec3& b, V
 // within angle_threshold, equal length within equal_length_tolerance, against
 // every scaffold line, and workspace.up for parallel (eq. 4) and
 // perpendicular (eq. 3). Coincident keypoints
-// (several lines sharing a corner) give one point–point term. Deterministic
-// order: by line point, then kind, then curve id.
+// (several lines sharing a corner) give one point–point term, and a keypoint
+// is a candidate for the nearest point of l only (two points of l held at
+// one keypoint would make l a point). Deterministic order: by line point,
+// then kind, then curve id.
 std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, const Network& network,
                                               const Workspace& workspace,
                                               const ScaffoldParams& params, double scale);

@@ -1,6 +1,7 @@
 // ScaffoldSketch §4.1: candidates (eq. 1–5), IRLS (eq. 6–7), ticks.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "irls_solver.hpp"
@@ -279,11 +280,127 @@ TEST_CASE("terms with equal energy are merged without changing the IRLS result",
   CHECK((merged.b - merged.a).normalized().cross(Vec3::UnitY()).norm() < 1e-9);
 
   // Reference: eq. 6 with plain weights and no merging, through the same
-  // minimiser, equals the merged objective term by term.
+  // minimiser, equals the merged objective term by term (to the pull of its
+  // anchor, ~1e-12 of the distance to the input, which the solver's last
+  // stage removes).
   std::vector<double> w(6);
   for (std::size_t i = 0; i < 6; ++i) w[i] = merged.weights[i] * (merged.enforced[i] ? 1 : 0);
   Vec3 a = merged.a, b = merged.b;
   minimise_weighted(terms, w, a, b, a0, b0);
-  CHECK((a - merged.a).norm() < 1e-12);
-  CHECK((b - merged.b).norm() < 1e-12);
+  CHECK((a - merged.a).norm() < 1e-11);
+  CHECK((b - merged.b).norm() < 1e-11);
+}
+
+TEST_CASE("one keypoint holds one point of a line: short lines from a corner keep their length",
+          "[scaffoldsketch]") {
+  // Issue #18, defect 1a: an 8.2 cm line whose start and midpoint both lie
+  // within 5 cm of one keypoint took both point–point terms, which together
+  // demand b = a (the line became 3 nm long).
+  Sketch sketch;
+  const Vec3 corner(0, 1, 0);
+  add_scaffold_line(sketch, corner, Vec3(0.3, 1, 0));
+  const Vec3 u = Vec3(1, 1.2, 1.5).normalized();  // no direction candidate
+  const Vec3 a = corner + Vec3(0.004, 0.003, -0.002);
+  const Vec3 b = a + 0.082 * u;
+  REQUIRE((0.5 * (a + b) - corner).norm() < 0.05);  // the midpoint is a candidate's reach
+  const Correction c = correct_scaffold_line(a, b, 2, sketch, ScaffoldParams{}, 1.0);
+  REQUIRE(c.error.empty());
+  const Curve& line = c.edit.curves_added.at(0).curve;
+  const Vec3 s = line.control_points.front(), e = line.control_points.back();
+  CHECK((s - corner).norm() < 1e-9);
+  CHECK((e - b).norm() < 1e-9);  // nothing acts on the free end
+  for (const Constraint& k : c.constraints)
+    if (k.kind == ConstraintKind::coincident_point) CHECK(k.references[0].parameter == 0.0);
+
+}
+
+TEST_CASE("a snapped start and a direction do not collapse a line", "[scaffoldsketch]") {
+  // Issue #18, defect 1b: a 12.7 cm line with a point–point term at its
+  // start and a parallel term collapsed to microns in the first IRLS round,
+  // at any ε: Marquardt's diagonal damping leaked the turning step into the
+  // length, which no term constrains.
+  const Vec3 a0(-0.10008, 1.45727, -0.65772), b0(-0.10041, 1.58412, -0.66389);
+  std::vector<ScaffoldTerm> terms(2);
+  terms[0].kind = TermKind::point_point;
+  terms[0].p = Vec3(-0.09381, 1.46978, -0.67730);
+  terms[1].kind = TermKind::parallel;
+  terms[1].d = Vec3(0.044414, 0.996657, -0.068577).normalized();
+  for (const double eps : {1e-6, 1e-9, 1e-12, 1e-15}) {
+    INFO("epsilon " << eps);
+    IrlsOptions options;
+    options.epsilon = eps;
+    const IrlsResult r = solve_irls(terms, a0, b0, options);
+    CHECK(r.enforced[0]);
+    CHECK(r.enforced[1]);
+    CHECK((r.a - terms[0].p).norm() < 1e-6);
+    // The line turns about its snapped start, and its free end is the
+    // point of that line closest to where it was drawn (11.3 cm long).
+    const Vec3 d = terms[1].d, p = terms[0].p;
+    CHECK((r.b - (p + d * d.dot(b0 - p))).norm() < 1e-6);
+  }
+}
+
+TEST_CASE("a direction the terms leave free stays where it was drawn", "[scaffoldsketch]") {
+  // Issue #18, defect 2, as found by the random-session property test: a
+  // 7 cm line drawn down from a corner of level lines, its start snapped
+  // there, perpendicular to every level line (so vertical) and on the
+  // corner's vertical line: its length is free. The candidates below are
+  // that stroke's (seed 111, stroke 55). With the old 1e-6 (1/m²) anchor,
+  // far below the damping at weights near 1/ε, the free end slid 1.8 m down
+  // over 50 IRLS rounds, every term reported enforced.
+  struct Row {
+    TermKind kind;
+    Vec3 p, ka, kb, d;
+  };
+  const std::vector<Row> rows{
+      {TermKind::point_point, {0.7069135688481971, 1.08782288083153, -0.29500775032722865}, {}, {}, {}},
+      {TermKind::point_line, {}, {0.890604984095253, 1.08782288083153, 0.06532163230853072}, {0.7069135688481971, 1.08782288083153, -0.29500775032722865}, {}},
+      {TermKind::point_line, {}, {0.7069135688481971, 1.08782288083153, -0.29500775032722865}, {1.0672429514839565, 1.08782288083153, -0.47869916557428455}, {}},
+      {TermKind::point_line, {}, {0.7069135688481971, 1.08782288083153, -0.29500775032722865}, {0.7069135688481971, 1.492272877773221, -0.29500775032722865}, {}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8836622689355697, 0, 0.46812497739347453}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.8836622689355697, 0, -0.46812497739347453}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8836622689355697, 0, 0.46812497739347453}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.8836622689355697, 0, -0.4681249773934746}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.4541758354211052, 0, -0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8909120666595224, 0, -0.45417583542110507}},
+      {TermKind::perpendicular, {}, {}, {}, {0.4541758354211052, 0, 0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.8909120666595224, 0, 0.45417583542110507}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.4541758354211052, 0, -0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8909120666595225, 0, -0.454175835421105}},
+      {TermKind::perpendicular, {}, {}, {}, {0.4541758354211052, 0, 0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.8909120666595225, 0, 0.454175835421105}},
+      {TermKind::perpendicular, {}, {}, {}, {0.4541758354211052, 0, 0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.4233845148990578, -0.17231384519100412, 0.8894118794457269}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8836622689355698, 0, 0.4681249773934745}},
+      {TermKind::perpendicular, {}, {}, {}, {0.4541758354211052, 0, 0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8909120666595224, 0, -0.454175835421105}},
+      {TermKind::perpendicular, {}, {}, {}, {0.45417583542110496, 0, 0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.9378548574850687, 0, 0.3470277601167689}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.454175835421105, 0, -0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {0.8909120666595224, 0, -0.454175835421105}},
+      {TermKind::perpendicular, {}, {}, {}, {0.45417583542110496, 0, 0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.8909120666595225, 0, 0.454175835421105}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.454175835421105, 0, -0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {-0.4541758354211052, 0, -0.8909120666595224}},
+      {TermKind::perpendicular, {}, {}, {}, {0.45417583542110496, 0, 0.8909120666595224}},
+  };
+  std::vector<ScaffoldTerm> terms;
+  for (const Row& row : rows) {
+    ScaffoldTerm t;
+    t.kind = row.kind;
+    t.p = row.p;
+    t.ka = row.ka;
+    t.kb = row.kb;
+    t.d = row.d;
+    terms.push_back(t);
+  }
+  const Vec3 a0(0.70663059742931966, 1.0961123726630877, -0.28315843405469654),
+      b0(0.71036673289780794, 1.0247335827439488, -0.29914049801880765);
+  const IrlsResult r = solve_irls(terms, a0, b0, IrlsOptions{});
+  const Vec3 p = terms[0].p, up(0, 1, 0);
+  CHECK(r.converged);
+  CHECK((r.a - p).norm() < 1e-9);
+  // Vertical through the corner, its free end at the drawn height.
+  CHECK((r.b - (p + up * up.dot(b0 - p))).norm() < 1e-9);
+  CHECK(std::count(r.enforced.begin(), r.enforced.end(), true) >= 28);
 }
