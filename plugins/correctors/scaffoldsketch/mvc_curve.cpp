@@ -30,6 +30,19 @@ double menger_curvature(const Vec3& a, const Vec3& b, const Vec3& c, Mat3* grad)
   return k;
 }
 
+double tangent_curvature(const Vec3& q, const Vec3& d, const Vec3& b, Vec3* grad) {
+  const Vec3 v = b - q;
+  const double v2 = v.squaredNorm();
+  const Vec3 n = d.cross(v);
+  const double area2 = n.norm();
+  if (grad) grad->setZero();
+  if (v2 < 1e-30) return 0.0;
+  const double k = 2.0 * area2 / v2;
+  // d|n|/dv = n̂ × d; d(1/|v|²)/dv = -2v/|v|⁴.
+  if (grad && area2 > 1e-300) *grad = 2.0 * (n / area2).cross(d) / v2 - 2.0 * k * v / v2;
+  return k;
+}
+
 namespace {
 
 // One arclength sample: a point of segment k at fixed parameter u, affine in
@@ -40,9 +53,21 @@ struct SamplePoint {
   Vec3 w1 = Vec3::Zero(), w2 = Vec3::Zero();
 };
 
+// A point of the curvature sequence of eq. 9: the Menger curvature (eq. 8)
+// centred on a sample, or, at a keypoint, the curvature of the circle tangent
+// to the keypoint's constrained direction through the neighbouring sample
+// (the limit of eq. 8 with the third point moving into the keypoint along its
+// tangent).
+struct CurvatureSite {
+  bool tangent = false;
+  std::size_t sample = 0;  // Menger: the centre sample; tangent: the neighbour
+  Vec3 q = Vec3::Zero(), d = Vec3::Zero();  // tangent: the keypoint and its direction
+};
+
 struct Problem {
   std::vector<SamplePoint> samples;
-  bool closed = false;  // samples wrap around (the seam point is not repeated)
+  std::vector<CurvatureSite> sites;  // in curve order
+  bool closed = false;  // samples and sites wrap around (the seam point is not repeated)
   int evaluations = 0;
 };
 
@@ -88,7 +113,8 @@ std::vector<double> arclength_spread(const std::array<Vec3, 4>& p, int count) {
 }
 
 Problem make_problem(const std::vector<Vec3>& q, const std::vector<Vec3>& d,
-                     const std::vector<double>& x, bool closed, int per_segment) {
+                     const std::vector<double>& x, bool closed, int per_segment,
+                     bool tangent_sites) {
   const Curve c = build_curve(q, d, x, closed);
   const int segs = c.segment_count();
   std::vector<double> lengths(static_cast<std::size_t>(segs));
@@ -108,6 +134,7 @@ Problem make_problem(const std::vector<Vec3>& q, const std::vector<Vec3>& d,
   const double spacing = total / (static_cast<double>(per_segment) * segs);
   Problem problem;
   problem.closed = closed;
+  std::vector<int> keypoint_at;  // per sample: the keypoint there, or -1
   for (int k = 0; k < segs; ++k) {
     const int count = std::max(
         2, static_cast<int>(std::lround(lengths[static_cast<std::size_t>(k)] / spacing)));
@@ -120,6 +147,7 @@ Problem make_problem(const std::vector<Vec3>& q, const std::vector<Vec3>& d,
       s.base = (b0 + b1) * q[static_cast<std::size_t>(k)] + (b2 + b3) * q[static_cast<std::size_t>(k) + 1];
       s.w1 = b1 * d[static_cast<std::size_t>(k)];
       s.w2 = b2 * d[static_cast<std::size_t>(k) + 1];
+      keypoint_at.push_back(u == 0.0 ? k : -1);
       problem.samples.push_back(s);
     }
   }
@@ -127,12 +155,33 @@ Problem make_problem(const std::vector<Vec3>& q, const std::vector<Vec3>& d,
     SamplePoint s;
     s.segment = segs - 1;
     s.base = q.back();
+    keypoint_at.push_back(segs);
     problem.samples.push_back(s);
+  }
+
+  // The curvature sequence: Menger at every sample with two neighbours;
+  // with tangent_sites, at each keypoint also the tangent circle toward the
+  // sample before and the one after (the curve ends have only one).
+  const std::size_t n = problem.samples.size();
+  auto tangent_site = [&](int k, std::size_t neighbour) {
+    CurvatureSite site;
+    site.tangent = true;
+    site.sample = neighbour;
+    site.q = q[static_cast<std::size_t>(k)];
+    site.d = d[static_cast<std::size_t>(k)];
+    problem.sites.push_back(site);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool has_before = closed || i > 0, has_after = closed || i + 1 < n;
+    const int k = keypoint_at[i];
+    if (tangent_sites && k >= 0 && has_before) tangent_site(k, (i + n - 1) % n);
+    if (has_before && has_after) problem.sites.push_back(CurvatureSite{false, i, {}, {}});
+    if (tangent_sites && k >= 0 && has_after) tangent_site(k, (i + 1) % n);
   }
   return problem;
 }
 
-// Eq. 9 over the curvatures (eq. 8) of consecutive sample triples.
+// Eq. 9 over the curvature sequence of the problem's sites.
 double objective(const Problem& pb, const std::vector<double>& x, std::vector<double>* grad) {
   const std::size_t n = pb.samples.size();
   std::vector<Vec3> b(n);
@@ -141,16 +190,21 @@ double objective(const Problem& pb, const std::vector<double>& x, std::vector<do
     const auto k = static_cast<std::size_t>(s.segment);
     b[i] = s.base + x[2 * k] * s.w1 - x[2 * k + 1] * s.w2;
   }
-  // Curvature at sample i uses (i-1, i, i+1); wrapped when closed.
-  std::vector<std::size_t> centre;
-  for (std::size_t i = pb.closed ? 0 : 1; i < (pb.closed ? n : n - 1); ++i) centre.push_back(i);
-  const std::size_t m = centre.size();
+  const std::size_t m = pb.sites.size();
   std::vector<double> c(m);
-  std::vector<Mat3> g(grad ? m : 0);
-  auto at = [&](std::size_t i, long off) { return (i + n + static_cast<std::size_t>(off + static_cast<long>(n))) % n; };
+  std::vector<Mat3> g(grad ? m : 0);  // Menger: one column per point; tangent: column 0
+  auto before = [&](std::size_t i) { return (i + n - 1) % n; };
+  auto after = [&](std::size_t i) { return (i + 1) % n; };
   for (std::size_t j = 0; j < m; ++j) {
-    const std::size_t i = centre[j];
-    c[j] = menger_curvature(b[at(i, -1)], b[i], b[at(i, 1)], grad ? &g[j] : nullptr);
+    const CurvatureSite& site = pb.sites[j];
+    if (site.tangent) {
+      Vec3 gv;
+      c[j] = tangent_curvature(site.q, site.d, b[site.sample], grad ? &gv : nullptr);
+      if (grad) g[j].col(0) = gv;
+    } else {
+      const std::size_t i = site.sample;
+      c[j] = menger_curvature(b[before(i)], b[i], b[after(i)], grad ? &g[j] : nullptr);
+    }
   }
   const std::size_t pairs = pb.closed ? m : (m > 0 ? m - 1 : 0);
   double f = 0;
@@ -164,16 +218,21 @@ double objective(const Problem& pb, const std::vector<double>& x, std::vector<do
   }
   if (grad) {
     std::fill(grad->begin(), grad->end(), 0.0);
+    auto add = [&](std::size_t sample, const Vec3& dp) {
+      const SamplePoint& s = pb.samples[sample];
+      const auto k = static_cast<std::size_t>(s.segment);
+      (*grad)[2 * k] += dp.dot(s.w1);
+      (*grad)[2 * k + 1] -= dp.dot(s.w2);
+    };
     for (std::size_t j = 0; j < m; ++j) {
       if (df[j] == 0.0) continue;
-      const std::size_t i = centre[j];
-      const std::size_t idx[3] = {at(i, -1), i, at(i, 1)};
-      for (int r = 0; r < 3; ++r) {
-        const SamplePoint& s = pb.samples[idx[r]];
-        const auto k = static_cast<std::size_t>(s.segment);
-        const Vec3 dp = df[j] * g[j].col(r);
-        (*grad)[2 * k] += dp.dot(s.w1);
-        (*grad)[2 * k + 1] -= dp.dot(s.w2);
+      const CurvatureSite& site = pb.sites[j];
+      if (site.tangent) {
+        add(site.sample, df[j] * g[j].col(0));
+      } else {
+        const std::size_t i = site.sample;
+        const std::size_t idx[3] = {before(i), i, after(i)};
+        for (int r = 0; r < 3; ++r) add(idx[r], df[j] * g[j].col(r));
       }
     }
   }
@@ -224,7 +283,7 @@ MvcResult fit_mvc_curve(const std::vector<Vec3>& q, const std::vector<Vec3>& d, 
   MvcResult out;
   const int per_segment = std::max(2, params.samples_per_segment);
   for (int round = 0; round < 2; ++round) {
-    Problem pb = make_problem(q, d, x, closed, per_segment);
+    Problem pb = make_problem(q, d, x, closed, per_segment, params.tangent_curvature);
     if (round == 0) out.initial_objective = objective(pb, x, nullptr);
     nlopt::opt opt(nlopt::LD_LBFGS, static_cast<unsigned>(x.size()));
     opt.set_lower_bounds(lower);

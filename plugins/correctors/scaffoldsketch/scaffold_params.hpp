@@ -31,6 +31,7 @@ struct ShapeParams {
   double straight_deviation = 0.08;       // PCA straightness: max distance / PCA length (§4.2.2)
   double straight_length_tolerance = 0.10;  // PCA length within this of the arclength (§4.2.2)
   int samples_per_segment = 8;            // mean arclength samples per Bézier segment (eq. 8–9)
+  bool tangent_curvature = true;          // eq. 9 also sees each keypoint's tangent circle (ours)
   int max_evaluations = 3000;             // NLopt objective evaluations per solve
 };
 

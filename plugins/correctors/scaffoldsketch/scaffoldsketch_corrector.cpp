@@ -47,6 +47,9 @@ std::vector<ParamSpec> parameter_specs() {
        "", "PCA length within this fraction of the arclength, §4.2.2 (10 %)"},
       {"samples_per_segment", ParamType::integer, std::int64_t{h.samples_per_segment}, 2, 200,
        {}, "", "mean arclength samples per Bézier segment for eq. 8–9 (at least 2 each)"},
+      {"tangent_curvature", ParamType::boolean, h.tangent_curvature, {}, {}, {}, "",
+       "eq. 9 also compares, at each keypoint, the curvature of the circle tangent to its "
+       "constrained direction (no hooks); false: eq. 8 at arclength samples only"},
       {"max_evaluations", ParamType::integer, std::int64_t{h.max_evaluations}, 10, 1000000, {},
        "", "NLopt objective evaluations per MVC solve"},
       {"delta", ParamType::real, p.delta, 0.001, 0.5, {}, "m",
@@ -73,6 +76,7 @@ ScaffoldSketchCorrector::ScaffoldSketchCorrector(const Params& p) {
   shape_.straight_deviation = p.real("straight_deviation");
   shape_.straight_length_tolerance = p.real("straight_length_tolerance");
   shape_.samples_per_segment = static_cast<int>(p.integer("samples_per_segment"));
+  shape_.tangent_curvature = p.boolean("tangent_curvature");
   shape_.max_evaluations = static_cast<int>(p.integer("max_evaluations"));
   preprocess_.delta = p.real("delta");
   // Automatic strokes are lines by shape alone (chord/length >= 0.98):
