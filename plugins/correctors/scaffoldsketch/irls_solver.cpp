@@ -236,6 +236,26 @@ int keep_free_directions_drawn(const std::vector<ScaffoldTerm>& terms,
   return steps;
 }
 
+// When every kept term is a direction (eq. 3–4, invariant under scaling
+// about the midpoint), the length is free: keep the drawn one. This is what
+// the gradient of eq. 6 does from the input (it is orthogonal to l_b − l_a,
+// so a descent keeps the length) and what the authors' code does; the
+// anchor alone would give the projection, L·cos θ.
+void keep_drawn_length(const std::vector<ScaffoldTerm>& terms, const std::vector<bool>& kept,
+                       const Vec3& a0, const Vec3& b0, Vec3& a, Vec3& b) {
+  bool any = false;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    if (!kept[i]) continue;
+    if (terms[i].kind != TermKind::parallel && terms[i].kind != TermKind::perpendicular) return;
+    any = true;
+  }
+  const double length = (b - a).norm();
+  if (!any || !(length > 0)) return;
+  const Vec3 m = 0.5 * (a + b), half = 0.5 * (b0 - a0).norm() / length * (b - a);
+  a = m - half;
+  b = m + half;
+}
+
 }  // namespace
 
 IrlsResult solve_irls(const std::vector<ScaffoldTerm>& input_terms, const Vec3& a0,
@@ -291,6 +311,7 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& input_terms, const Vec3& 
     b = pb;
   }
   result.solver_steps += keep_free_directions_drawn(terms, objective_weight, eps, a, b, a0, b0);
+  if (options.direction_only_keeps_length) keep_drawn_length(terms, satisfied, a0, b0, a, b);
   const double input_length = (b0 - a0).norm();
   if (!a.allFinite() || !b.allFinite() || (b - a).norm() < 1e-9 * std::max(input_length, 1.0)) {
     a = a0;  // collapsed or diverged: keep what the user drew

@@ -13,6 +13,9 @@ struct IrlsOptions {
   double epsilon = 1e-12;             // ε of eq. 7; C <= ε counts as satisfied
   int max_iterations = 50;            // IRLS rounds
   double move_tolerance = 1e-7;       // m: endpoints moving less than this are settled (0.1·sqrt(ε))
+  // Only direction terms kept (they leave the length free): true keeps the
+  // drawn length about the midpoint, false the nearest line to the input.
+  bool direction_only_keeps_length = true;
 };
 
 struct IrlsResult {
@@ -46,7 +49,9 @@ int minimise_weighted(const std::vector<ScaffoldTerm>& terms, const std::vector<
 // a final solve with the discarded terms' weights set to 0 makes the
 // satisfied ones exact; then, in every direction the satisfied terms leave
 // free, the line is moved back to where it was drawn (the nearest line to
-// the input that satisfies them). Never returns NaN: a non-finite or
+// the input that satisfies them; with direction_only_keeps_length, a line
+// whose satisfied terms are all directions also gets its drawn length back,
+// which they do not change). Never returns NaN: a non-finite or
 // collapsed solution falls back to the input line with nothing enforced.
 IrlsResult solve_irls(const std::vector<ScaffoldTerm>& terms, const Vec3& a0, const Vec3& b0,
                       const IrlsOptions& options);

@@ -208,21 +208,30 @@ std::vector<ScaffoldTerm> scaffold_candidates(const Vec3& a, const Vec3& b, cons
       if (term_energy(t, a, b) < radius2) terms.push_back(t);
     }
     if (at == LinePoint::middle) continue;  // point–line is for endpoints (§4.1)
-    std::vector<CurveHit> hits = network.curves_near(x, radius);
-    std::sort(hits.begin(), hits.end(),
-              [](const CurveHit& l, const CurveHit& r) { return l.curve < r.curve; });
-    for (const CurveHit& hit : hits) {
-      const NetworkCurve* c = network.find_curve(hit.curve);
-      if (!c || !is_scaffold_line(*c)) continue;
+    auto add_point_line = [&](CurveId id, const NetworkCurve& c) {
       ScaffoldTerm t;
       t.kind = TermKind::point_line;
       t.at = at;
-      t.ka = c->curve.control_points.front();
-      t.kb = c->curve.control_points.back();
-      t.curve = hit.curve;
-      t.curve_t = hit.t;
-      if ((t.ka - t.kb).norm() < min_length) continue;
+      t.ka = c.curve.control_points.front();
+      t.kb = c.curve.control_points.back();
+      t.curve = id;
+      const Vec3 e = t.kb - t.ka;
+      if (e.norm() < min_length) return;
+      t.curve_t = std::clamp(e.dot(x - t.ka) / e.squaredNorm(), 0.0, 1.0);
       if (term_energy(t, a, b) < radius2) terms.push_back(t);
+    };
+    if (params.point_line_reach == PointLineReach::line) {
+      // Eq. 2 is the distance to k's infinite line, and its value on the
+      // input decides inclusion: an end near the extension of a line counts.
+      for (const auto& [id, c] : network.curves())
+        if (is_scaffold_line(c)) add_point_line(id, c);
+    } else {
+      std::vector<CurveHit> hits = network.curves_near(x, radius);
+      std::sort(hits.begin(), hits.end(),
+                [](const CurveHit& l, const CurveHit& r) { return l.curve < r.curve; });
+      for (const CurveHit& hit : hits)
+        if (const NetworkCurve* c = network.find_curve(hit.curve); c && is_scaffold_line(*c))
+          add_point_line(hit.curve, *c);
     }
   }
 

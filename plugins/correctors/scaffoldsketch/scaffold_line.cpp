@@ -110,6 +110,8 @@ Correction correct_scaffold_line(const Vec3& a, const Vec3& b, StrokeId stroke,
   // slow creep of a compromise below ε between nearly compatible satisfied
   // terms, which took up to 40 rounds on CASSIE's chair (paper: 2–6).
   options.move_tolerance = 0.1 * std::sqrt(params.epsilon) / scale;
+  options.direction_only_keeps_length =
+      params.direction_only_length == DirectionOnlyLength::drawn;
   const IrlsResult result = solve_irls(terms, a, b, options);
 
   NetworkCurve curve;

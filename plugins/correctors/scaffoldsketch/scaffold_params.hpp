@@ -7,6 +7,35 @@ namespace sketchlab::scaffoldsketch {
 
 inline constexpr double degrees = std::numbers::pi / 180.0;
 
+// Where the paper and the authors' implementation differ (issue #18), the
+// authors' behaviour is a choice; each default is what the paper implies
+// (README, "Paper and authors' code").
+
+// Which end positions take a point–line candidate (eq. 2).
+enum class PointLineReach {
+  line,     // within point_distance of the scaffold line's infinite extension (eq. 2; authors)
+  segment,  // within point_distance of the scaffold segment itself
+};
+
+// The length of a line whose kept terms are all directions (eq. 3–4), which
+// leave it free.
+enum class DirectionOnlyLength {
+  drawn,    // the drawn length, about the drawn midpoint (authors; eq. 6's gradient keeps it)
+  nearest,  // the nearest such line to the drawn one (its projection: L·cos θ)
+};
+
+// The output of an approximately straight shape stroke (§4.2.2).
+enum class StraightShape {
+  line,      // one exact line between the first and last keypoints (paper)
+  polyline,  // straight segments through every keypoint (authors)
+};
+
+// Which samples of a shape stroke choose a keypoint's tangent (§4.2.1).
+enum class TangentSample {
+  closest,  // the sample closest to the keypoint (paper: "the input curve's tangent")
+  best,     // the best-aligned of all samples that selected the keypoint (authors)
+};
+
 // §4.1, scaffold lines.
 struct ScaffoldParams {
   double point_distance = 0.05;          // m: point–point and point–line inclusion (eq. 1, 2)
@@ -21,6 +50,8 @@ struct ScaffoldParams {
   bool vertical_parallel = true;         // parallel-to-up candidate (eq. 4 with d = workspace.up)
   bool vertical_perpendicular = true;    // perpendicular-to-up candidate (eq. 3 with d = workspace.up)
   double node_tolerance = 1e-6;          // m: an endpoint this close to a curve makes a Node
+  PointLineReach point_line_reach = PointLineReach::line;
+  DirectionOnlyLength direction_only_length = DirectionOnlyLength::drawn;
 };
 
 // §4.2, shape strokes.
@@ -33,6 +64,8 @@ struct ShapeParams {
   int samples_per_segment = 8;            // mean arclength samples per Bézier segment (eq. 8–9)
   bool tangent_curvature = true;          // eq. 9 also sees each keypoint's tangent circle (ours)
   int max_evaluations = 3000;             // NLopt objective evaluations per solve
+  StraightShape straight_shape = StraightShape::line;
+  TangentSample tangent_sample = TangentSample::closest;
 };
 
 }  // namespace sketchlab::scaffoldsketch

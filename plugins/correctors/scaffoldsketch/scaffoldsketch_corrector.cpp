@@ -35,6 +35,13 @@ std::vector<ParamSpec> parameter_specs() {
        "perpendicular-to-vertical-axis (horizontal) candidate, §4.1 eq. 3 with d = up"},
       {"node_tolerance", ParamType::real, s.node_tolerance, 0.0, 0.01, {}, "m",
        "a corrected end within this of a curve becomes a Node"},
+      {"point_line_reach", ParamType::choice, std::string("line"), {}, {}, {"line", "segment"}, "",
+       "point–line candidates for ends near a scaffold line's infinite extension (eq. 2, "
+       "authors) or near the segment only"},
+      {"direction_only_length", ParamType::choice, std::string("drawn"), {}, {},
+       {"drawn", "nearest"}, "",
+       "a line kept only by direction terms keeps its drawn length (authors; eq. 6's gradient) "
+       "or becomes the nearest such line (L·cos θ)"},
       {"sample_spacing", ParamType::real, h.sample_spacing, 0.001, 0.1, {}, "m",
        "shape stroke resampling step, §4.2.1 (1 cm)"},
       {"keypoint_distance", ParamType::real, h.keypoint_distance, 0.001, 0.5, {}, "m",
@@ -47,6 +54,13 @@ std::vector<ParamSpec> parameter_specs() {
        "", "PCA length within this fraction of the arclength, §4.2.2 (10 %)"},
       {"samples_per_segment", ParamType::integer, std::int64_t{h.samples_per_segment}, 2, 200,
        {}, "", "mean arclength samples per Bézier segment for eq. 8–9 (at least 2 each)"},
+      {"straight_shape", ParamType::choice, std::string("line"), {}, {}, {"line", "polyline"}, "",
+       "a straight shape stroke becomes one line between its first and last keypoints "
+       "(§4.2.2) or a polyline through every keypoint (authors)"},
+      {"tangent_sample", ParamType::choice, std::string("closest"), {}, {}, {"closest", "best"},
+       "",
+       "a keypoint's tangent is matched at the sample closest to it (§4.2.1) or best over "
+       "every sample that selected it (authors)"},
       {"tangent_curvature", ParamType::boolean, h.tangent_curvature, {}, {}, {}, "",
        "eq. 9 also compares, at each keypoint, the curvature of the circle tangent to its "
        "constrained direction (no hooks); false: eq. 8 at arclength samples only"},
@@ -70,12 +84,21 @@ ScaffoldSketchCorrector::ScaffoldSketchCorrector(const Params& p) {
   scaffold_.vertical_parallel = p.boolean("vertical_parallel");
   scaffold_.vertical_perpendicular = p.boolean("vertical_perpendicular");
   scaffold_.node_tolerance = p.real("node_tolerance");
+  scaffold_.point_line_reach =
+      p.string("point_line_reach") == "line" ? PointLineReach::line : PointLineReach::segment;
+  scaffold_.direction_only_length = p.string("direction_only_length") == "drawn"
+                                        ? DirectionOnlyLength::drawn
+                                        : DirectionOnlyLength::nearest;
   shape_.sample_spacing = p.real("sample_spacing");
   shape_.keypoint_distance = p.real("keypoint_distance");
   shape_.tangent_angle = p.real("tangent_angle") * degrees;
   shape_.straight_deviation = p.real("straight_deviation");
   shape_.straight_length_tolerance = p.real("straight_length_tolerance");
   shape_.samples_per_segment = static_cast<int>(p.integer("samples_per_segment"));
+  shape_.straight_shape =
+      p.string("straight_shape") == "line" ? StraightShape::line : StraightShape::polyline;
+  shape_.tangent_sample =
+      p.string("tangent_sample") == "closest" ? TangentSample::closest : TangentSample::best;
   shape_.tangent_curvature = p.boolean("tangent_curvature");
   shape_.max_evaluations = static_cast<int>(p.integer("max_evaluations"));
   preprocess_.delta = p.real("delta");

@@ -27,7 +27,9 @@ struct ShapeKeypoints {
 // (below tangent_angle) with the forward difference d = (p_{i+1} - p_i) /
 // |p_{i+1} - p_i|, else the local average direction of the stroke
 // (p_{i+2} - p_{i-2}, clamped to the ends). For a run of samples selecting
-// the same keypoint, the sample closest to it is used.
+// the same keypoint, i is the sample closest to it; with tangent_sample best,
+// the smallest angle is taken over the forward differences of every sample
+// of the run (the local direction still comes from the closest).
 ShapeKeypoints select_shape_keypoints(const std::vector<Vec3>& samples, const Network& network,
                                       const ShapeParams& params, double scale);
 

@@ -15,6 +15,28 @@
 
 namespace sketchlab::scaffoldsketch {
 
+namespace {
+
+// Straight segments through `points` (distinct neighbours), sharp at every
+// inner joint; the line itself for two points.
+Curve polyline_curve(const std::vector<Vec3>& points) {
+  if (points.size() == 2) return make_line(points.front(), points.back());
+  Curve c;
+  c.kind = CurveKind::bezier;
+  c.control_points.push_back(points.front());
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const Vec3 e = points[k + 1] - points[k];
+    c.control_points.push_back(points[k] + e / 3.0);
+    c.control_points.push_back(points[k] + 2.0 * e / 3.0);
+    c.control_points.push_back(points[k + 1]);
+  }
+  c.sharp.assign(points.size(), true);
+  c.sharp.front() = c.sharp.back() = false;
+  return c;
+}
+
+}  // namespace
+
 std::vector<Vec3> resample_every(const std::vector<Vec3>& points, double spacing) {
   std::vector<Vec3> distinct;
   for (const Vec3& p : points)
@@ -62,9 +84,16 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
   const PcaLine pca =
       fit_pca_line(samples, params.straight_deviation, params.straight_length_tolerance);
   const bool straight = pca.is_line && (keys.points.back() - keys.points.front()).norm() > 1e-12;
+  // §4.2.2: one exact line between the first and last keypoints, whose
+  // interior keypoints then constrain nothing; or the authors' polyline.
+  const bool ends_only = straight && params.straight_shape == StraightShape::line;
+  auto parameter = [&](std::size_t j) {
+    return ends_only ? (j + 1 == m ? 1.0 : 0.0) : static_cast<double>(j);
+  };
   double mode = mode_shape_curve;
-  if (straight) {  // §4.2.2: exact line between the first and last keypoints
-    curve.curve = make_line(keys.points.front(), keys.points.back());
+  if (straight) {
+    curve.curve = ends_only ? make_line(keys.points.front(), keys.points.back())
+                            : polyline_curve(keys.points);
     mode = mode_shape_line;
     Constraint c;
     c.kind = ConstraintKind::straight;
@@ -84,10 +113,10 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
   curve.keypoints = default_keypoints(curve.curve);
   const double n_samples = static_cast<double>(samples.size() - 1);
   for (std::size_t j = 0; j < m; ++j) {
-    const double t = straight ? (j + 1 == m ? 1.0 : 0.0) : static_cast<double>(j);
-    const bool interior = !straight && j > 0 && j + 1 < m;
+    const double t = parameter(j);
+    const bool interior = j > 0 && j + 1 < m;
+    if (interior && ends_only) continue;
     if (interior) curve.keypoints.push_back(Keypoint{Keypoint::Kind::other, t, keys.points[j]});
-    if (straight && j > 0 && j + 1 < m) continue;  // only the ends constrain a line
     Constraint c;
     c.kind = ConstraintKind::coincident_point;
     c.references = {
@@ -114,9 +143,8 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
   const double tolerance = scaled_threshold(node_tolerance, scale);
   for (std::size_t j = 0; j < m; ++j) {
     if (keys.closed && j + 1 == m) break;  // the seam is the first keypoint
-    if (straight && j > 0 && j + 1 < m) continue;
-    const double t = straight ? (j == 0 ? 0.0 : 1.0) : static_cast<double>(j);
-    connect_point(network, keys.points[j], curve.id, t, tolerance, out.edit, next_node);
+    if (ends_only && j > 0 && j + 1 < m) continue;
+    connect_point(network, keys.points[j], curve.id, parameter(j), tolerance, out.edit, next_node);
   }
   return finish(mode);
 }

@@ -225,12 +225,20 @@ TEST_CASE("a nearly level line becomes exactly level, a steep one stays", "[scaf
     const Curve& line = c.edit.curves_added[0].curve;
     const Vec3 u = (line.control_points.back() - line.control_points.front()).normalized();
     CHECK(std::abs(u.dot(up)) < 1e-9);
-    // The nearest level line to the input (eq. 6's anchor): the horizontal
-    // projection of the drawn line, around the same midpoint.
+    // Around the drawn midpoint, along the drawn line's horizontal
+    // direction, with the drawn length (direction_only_length drawn) or the
+    // horizontal projection's (nearest: the nearest level line).
     const Vec3 level = (b - a) - up * up.dot(b - a);
-    CHECK(((line.control_points.back() - line.control_points.front()) - level).norm() < 1e-6);
+    CHECK(((line.control_points.back() - line.control_points.front()) -
+           level.normalized() * (b - a).norm()).norm() < 1e-9);
     CHECK(((line.control_points.back() + line.control_points.front()) / 2 - (a + b) / 2).norm() <
-          1e-6);
+          1e-9);
+    ScaffoldParams nearest;
+    nearest.direction_only_length = DirectionOnlyLength::nearest;
+    const Correction n = correct_scaffold_line(a, b, 4, sketch, nearest, 1.0);
+    const Curve& projected = n.edit.curves_added.at(0).curve;
+    CHECK(((projected.control_points.back() - projected.control_points.front()) - level).norm() <
+          1e-9);
   }
   // 12° off level is outside the 10° threshold: no candidate, line as drawn.
   const Vec3 b = a + 0.4 * Vec3(std::cos(12 * degrees), std::sin(12 * degrees), 0);
@@ -403,4 +411,31 @@ TEST_CASE("a direction the terms leave free stays where it was drawn", "[scaffol
   // Vertical through the corner, its free end at the drawn height.
   CHECK((r.b - (p + up * up.dot(b0 - p))).norm() < 1e-9);
   CHECK(std::count(r.enforced.begin(), r.enforced.end(), true) >= 28);
+}
+
+TEST_CASE("an end near a line's extension takes a point-line term (point_line_reach)",
+          "[scaffoldsketch]") {
+  // Eq. 2 is the distance to k's infinite line: an end 10 cm past the end of
+  // a scaffold line and 2 cm off its extension is a candidate (line, the
+  // default), but is no one within 5 cm of the segment (segment).
+  Sketch sketch;
+  const CurveId k = add_scaffold_line(sketch, Vec3(0, 1, 0), Vec3(0.4, 1, 0));
+  const Vec3 a(0.5, 1.02, 0.01), b(0.5, 1.02, 0.4);
+  auto distance_to_extension = [](const Vec3& p) { return std::hypot(p.y() - 1, p.z()); };
+  const Correction line = correct_scaffold_line(a, b, 2, sketch, ScaffoldParams{}, 1.0);
+  REQUIRE(line.error.empty());
+  bool on_line = false;
+  for (const Constraint& c : line.constraints)
+    if (c.kind == ConstraintKind::point_on_curve && c.enforced && c.references.size() > 1 &&
+        c.references[1].id == k)
+      on_line = true;
+  CHECK(on_line);
+  CHECK(distance_to_extension(line.edit.curves_added.at(0).curve.control_points.front()) < 1e-9);
+
+  ScaffoldParams segment;
+  segment.point_line_reach = PointLineReach::segment;
+  const Correction seg = correct_scaffold_line(a, b, 2, sketch, segment, 1.0);
+  REQUIRE(seg.error.empty());
+  for (const Constraint& c : seg.constraints) CHECK(c.kind != ConstraintKind::point_on_curve);
+  CHECK(distance_to_extension(seg.edit.curves_added.at(0).curve.control_points.front()) > 0.015);
 }

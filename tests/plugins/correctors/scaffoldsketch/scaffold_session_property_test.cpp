@@ -61,19 +61,26 @@ bool length_demanded(const std::vector<Constraint>& constraints) {
 
 // The component of (a, b) - (a0, b0) in the null space of the enforced
 // terms' Jacobian at (a, b): zero when the free directions kept the drawn
-// position (m).
+// position (m). With only direction terms enforced the drawn length is
+// kept too (direction_only_length drawn), so the length is held as well.
 double free_move(const std::vector<ScaffoldTerm>& terms, const std::vector<Constraint>& records,
                  const Vec3& a, const Vec3& b, const Vec3& a0, const Vec3& b0) {
   Eigen::MatrixXd j(3 * terms.size() + 1, 6);
   j.setZero();
   Eigen::Index rows = 0;
+  bool directions_only = true;
   for (std::size_t i = 0; i < terms.size(); ++i) {
     if (!records[i].enforced) continue;
+    directions_only &= terms[i].kind == TermKind::parallel || terms[i].kind == TermKind::perpendicular;
     Vec3 r;
     Eigen::Matrix<double, 3, 6> ji;
     const int n = term_residual(terms[i], a, b, r, ji);
     j.middleRows(rows, n) = ji.topRows(n);
     rows += n;
+  }
+  if (rows > 0 && directions_only) {
+    const Vec3 u = (b - a).normalized();
+    j.row(rows++) << -u.transpose(), u.transpose();
   }
   Eigen::Matrix<double, 6, 1> x;
   x << a - a0, b - b0;

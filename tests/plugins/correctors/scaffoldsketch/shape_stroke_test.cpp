@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "mvc_curve.hpp"
+#include "shape_keypoints.hpp"
 #include "shape_stroke.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "test_helpers.hpp"
@@ -150,4 +151,71 @@ TEST_CASE("a bent shape stroke is not straightened", "[scaffoldsketch]") {
   const double x2 = (arc.control_points[3] - arc.control_points[2]).norm();
   CHECK(x1 == Approx(x2).epsilon(1e-4));
   CHECK(x1 / 0.2 == Approx(0.5523).epsilon(0.02));
+}
+
+TEST_CASE("a straight shape stroke: the paper's line or the authors' polyline (straight_shape)",
+          "[scaffoldsketch]") {
+  // Three keypoints, the middle one 1.2 cm off the line through the others.
+  Sketch sketch;
+  const Vec3 p(0, 1, 0), m(0.2, 1.012, 0), q(0.4, 1, 0);
+  for (const Vec3& k : {p, m, q}) add_scaffold_line(sketch, k, k + Vec3(0, 0, 0.3));
+  std::vector<Vec3> pts;
+  for (int i = 0; i <= 80; ++i) {
+    const double u = i / 80.0;
+    pts.push_back(p + (q - p) * u + Vec3(0, 0.006 * std::sin(std::numbers::pi * u), 0.002));
+  }
+  const Stroke s = polyline_stroke(70, pts, Layer::shape);
+  const Correction line = correct_shape_stroke(s, sketch, ShapeParams{}, 1e-6, PreprocessParams{});
+  REQUIRE(line.error.empty());
+  CHECK(line.stats.extra.at("mode") == 3);
+  CHECK(line.stats.extra.at("keypoints") == 3);
+  const Curve& exact = line.edit.curves_added.at(0).curve;
+  CHECK(exact.kind == CurveKind::line);
+  CHECK(exact.control_points.front() == p);
+  CHECK(exact.control_points.back() == q);
+
+  ShapeParams authors;
+  authors.straight_shape = StraightShape::polyline;
+  const Correction poly = correct_shape_stroke(s, sketch, authors, 1e-6, PreprocessParams{});
+  REQUIRE(poly.error.empty());
+  CHECK(poly.stats.extra.at("mode") == 3);
+  const Curve& c = poly.edit.curves_added.at(0).curve;
+  REQUIRE(c.segment_count() == 2);
+  CHECK((evaluate(c, 0) - p).norm() < 1e-12);
+  CHECK((evaluate(c, 1) - m).norm() < 1e-12);
+  CHECK((evaluate(c, 2) - q).norm() < 1e-12);
+  for (int k = 0; k < 2; ++k) {  // each segment straight
+    const Vec3 u = (evaluate(c, k + 1) - evaluate(c, k)).normalized();
+    for (int j = 1; j < 10; ++j) {
+      const Vec3 x = evaluate(c, k + j / 10.0) - evaluate(c, k);
+      CHECK((x - u * u.dot(x)).norm() < 1e-12);
+    }
+  }
+  CHECK(poly.edit.nodes_added.size() == 3);  // joined at every keypoint
+}
+
+TEST_CASE("a keypoint's tangent from its closest sample or the best of its run (tangent_sample)",
+          "[scaffoldsketch]") {
+  // The stroke runs along a scaffold line into its end keypoint K and turns
+  // 40° there: at the sample closest to K the forward difference is 40° off
+  // the line (> 25°, no snap), the samples before K run along it.
+  Sketch sketch;
+  const Vec3 k(0, 1, 0);
+  const CurveId along = add_scaffold_line(sketch, k, Vec3(0.3, 1, 0));
+  const Vec3 turned(std::cos(40 * degrees), std::sin(40 * degrees), 0);
+  std::vector<Vec3> samples;
+  for (int i = -20; i <= 0; ++i) samples.push_back(k + Vec3(0.01 * i, 0, 0));
+  for (int i = 1; i <= 20; ++i) samples.push_back(k + 0.01 * i * turned);
+  const ShapeKeypoints closest = select_shape_keypoints(samples, sketch.network, ShapeParams{}, 1.0);
+  REQUIRE(closest.points.size() == 1);
+  CHECK(closest.points[0] == k);
+  CHECK(closest.tangent_curve[0] == 0);  // the stroke's own direction
+  CHECK(closest.tangents[0].dot(Vec3::UnitX()) < std::cos(5 * degrees));
+
+  ShapeParams authors;
+  authors.tangent_sample = TangentSample::best;
+  const ShapeKeypoints best = select_shape_keypoints(samples, sketch.network, authors, 1.0);
+  REQUIRE(best.points.size() == 1);
+  CHECK(best.tangent_curve[0] == along);
+  CHECK((best.tangents[0] - Vec3::UnitX()).norm() < 1e-12);
 }
