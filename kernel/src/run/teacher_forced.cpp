@@ -16,6 +16,7 @@ struct Pending {
   StrokeId stroke = 0;
   double time = 0.0;
   Curve curve;
+  Layer layer = Layer::free;  // the stroke's own layer, as a layer-aware corrector expects
 };
 
 // Adds a reference curve to the sketch with nodes where its joints lie on
@@ -27,7 +28,7 @@ void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>
   NetworkCurve nc;
   nc.id = sketch.network.next_curve_id();
   nc.curve = p.curve;
-  nc.layer = Layer::free;
+  nc.layer = p.layer;
   nc.source_stroke = p.stroke;
   nc.keypoints = default_keypoints(p.curve);
   e.curves_added.push_back(nc);
@@ -169,7 +170,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
         }
       }
       out.push_back(r);
-      if (ref != reference.end()) pending.push_back({stroke.id, e.time, ref->second});
+      if (ref != reference.end()) pending.push_back({stroke.id, e.time, ref->second, stroke.layer});
     }
   }
   return out;

@@ -39,7 +39,10 @@ Mat3 cross_matrix(const Vec3& v) {
 }  // namespace
 
 bool is_scaffold_line(const NetworkCurve& curve) {
-  return curve.layer == Layer::scaffold && curve.curve.kind == CurveKind::line &&
+  // §3.2: a line drawn in scaffold or guide mode, or in no mode (automatic,
+  // free: this corrector makes those scaffold lines too, e.g. the reference
+  // curves of imported CASSIE sessions); a straight shape curve is not one.
+  return curve.layer != Layer::shape && curve.curve.kind == CurveKind::line &&
          curve.curve.control_points.size() == 4;
 }
 

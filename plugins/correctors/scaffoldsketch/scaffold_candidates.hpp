@@ -25,7 +25,7 @@ struct ScaffoldTerm {
   double curve_t = 0.0;             // keypoint / closest parameter on that curve
 };
 
-// A scaffold line of the network: layer scaffold and kind line.
+// A scaffold line of the network: kind line, on any layer but shape.
 bool is_scaffold_line(const NetworkCurve& curve);
 
 // C_i(l) of eq. 1–5 (squared metres for point kinds, dimensionless else);

@@ -5,7 +5,8 @@
 //
 // For each stroke of a recording the sketch is rebuilt from the reference
 // curves alive at that moment (strokes created strictly earlier and not yet
-// deleted, with nodes where a reference curve's joints lie on earlier curves),
+// deleted, each on its stroke's layer, with nodes where a reference curve's
+// joints lie on earlier curves),
 // the workspace of the WorkspaceEvents so far and the stroke's zoom; the
 // corrector corrects the raw stroke on that sketch, and its curve is compared
 // with the reference curve of the same stroke. Errors therefore never
