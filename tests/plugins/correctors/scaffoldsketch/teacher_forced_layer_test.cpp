@@ -18,7 +18,7 @@ TEST_CASE("teacher-forced references keep their stroke's layer", "[scaffoldsketc
     rec.events.push_back({time, ReferenceEvent{s.id, "cassie", reference}});
     time += 1;
   };
-  const Vec3 end(0.3, 1, 0), shape_end(1.3, 1, 0);
+  const Vec3 end(0.3, 1, 0), shape_start(1, 1.5, 0.5), shape_end(1.3, 1.5, 0.5);
   const Vec3 u = Vec3(0.3, 0.5, 0.4).normalized();  // no direction candidate
   // A scaffold line, then a scaffold stroke starting 1 cm from its end.
   add(straight_stroke(1, Vec3(0, 1, 0), end, Layer::scaffold), make_line(Vec3(0, 1, 0), end));
@@ -26,7 +26,7 @@ TEST_CASE("teacher-forced references keep their stroke's layer", "[scaffoldsketc
   add(straight_stroke(2, a, a + 0.2 * u, Layer::scaffold), make_line(end, a + 0.2 * u));
   // A straight shape curve, then a scaffold stroke starting 1 cm from its end:
   // a shape curve is no scaffold line, nothing snaps to it.
-  add(straight_stroke(3, Vec3(1, 1, 0), shape_end, Layer::shape), make_line(Vec3(1, 1, 0), shape_end));
+  add(straight_stroke(3, shape_start, shape_end, Layer::shape), make_line(shape_start, shape_end));
   const Vec3 c = shape_end + Vec3(0.006, 0.008, 0);
   const Vec3 v = Vec3(-0.4, 0.5, 0.3).normalized();  // nor here, nor an equal length
   add(straight_stroke(4, c, c + 0.5 * v, Layer::scaffold), make_line(c, c + 0.5 * v));
