@@ -12,21 +12,11 @@ namespace {
 
 soapfilm::FidelityReport run(const std::string& session) {
   return soapfilm::compare_with_cassie(test::source_path("data/cassie/sketch_graph/" + session + ".json"),
-                                       test::source_path("data/cassie/raw_data/" + session + ".json"),
+                                       soapfilm::load_cassie_session(test::source_path("data/cassie"), session),
                                        soapfilm::CycleSearchParams{});
 }
 
 }  // namespace
-
-TEST_CASE("CASSIE networks load with every stroke and node", "[soapfilm][slow]") {
-  const auto net = soapfilm::load_cassie_network(test::source_path("data/cassie/sketch_graph/hat.json"));
-  CHECK(net.network.curves().size() == 69);
-  CHECK(net.network.nodes().size() == 98);
-  // CASSIE's graph has 169 segments; the kernel derives the same pieces.
-  CHECK(net.network.segments().size() == 169);
-  CHECK_THROWS_WITH(soapfilm::load_cassie_network(test::source_path("data/cassie/missing.json")),
-                    Catch::Contains("missing.json"));
-}
 
 TEST_CASE("fidelity to CASSIE's automatic patches", "[soapfilm][slow]") {
   const auto hat = run("hat");

@@ -1,0 +1,264 @@
+#include "cassie_replay.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <map>
+
+#include "sketchlab/session.hpp"
+#include "soapfilm_surfacer.hpp"
+
+namespace sketchlab::soapfilm {
+namespace {
+
+// CASSIE stroke id k is stroke k + 1 here (ids start at 1).
+StrokeId stroke_id(std::int64_t cassie) { return static_cast<StrokeId>(cassie + 1); }
+
+// Adds each replayed stroke's CASSIE curve with CASSIE's graph.
+class CassieCurves : public Corrector {
+ public:
+  CassieCurves(const CassieSession& session, const CassieGraphParams& params) : params_(params) {
+    for (const CassieStroke& s : session.strokes) strokes_[stroke_id(s.id)] = &s;
+  }
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    Correction c;
+    const CassieStroke& s = *strokes_.at(stroke.id);
+    try {
+      c.edit = cassie_graph_edit(sketch.network, stroke.id, s.curve, s.canvas_scale, params_);
+    } catch (const std::exception& e) {
+      c.error = e.what();
+    }
+    return c;
+  }
+
+ private:
+  CassieGraphParams params_;
+  std::map<StrokeId, const CassieStroke*> strokes_;
+};
+
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
+// This plugin's surfacer, timing each call (wall and CPU of the calling
+// thread) and keeping the per-patch meshing CPU times.
+class TimedSoapfilm : public Surfacer {
+ public:
+  explicit TimedSoapfilm(const SoapfilmParams& params) : params_(params) {}
+  SurfaceUpdate update(const Sketch& sketch, const Edit& last) override {
+    return timed([&] { return soapfilm_update(sketch, last, params_, &per_patch_); });
+  }
+  SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) override {
+    return timed([&] { return soapfilm_command(sketch, command, params_); });
+  }
+  // Figures of the calls since the last take().
+  void take(ReplayEvent& e) {
+    e.surfacer_wall_ms = wall_ms_;
+    e.surfacer_cpu_ms = cpu_ms_;
+    e.patches_meshed = static_cast<int>(per_patch_.size());
+    for (const PatchMeshTimings& t : per_patch_) e.mesh_cpu_ms.push_back(t.fill_ms + t.remesh_ms + t.smooth_ms);
+    wall_ms_ = cpu_ms_ = 0.0;
+    per_patch_.clear();
+  }
+
+ private:
+  template <class F>
+  SurfaceUpdate timed(F&& f) {
+    const auto w0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_ms();
+    SurfaceUpdate u = f();
+    cpu_ms_ += thread_cpu_ms() - c0;
+    wall_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - w0).count();
+    return u;
+  }
+  SoapfilmParams params_;
+  double wall_ms_ = 0.0, cpu_ms_ = 0.0;
+  std::vector<PatchMeshTimings> per_patch_;
+};
+
+struct Step {
+  double time = 0.0;
+  int order = 0;  // at one time: stroke creations, deletions, then patch edits
+  std::size_t index = 0;
+  std::string kind;
+  std::int64_t element = 0;
+};
+
+Stroke placeholder_stroke(StrokeId id) {
+  // The corrector ignores the samples; the session only checks them.
+  Stroke s;
+  s.id = id;
+  Sample a, b;
+  b.position = Vec3(0.01, 0.0, 0.0);
+  b.time = 0.1;
+  s.samples = {a, b};
+  return s;
+}
+
+StrokeSet strokes_of(const Network& net, const Patch& p) {
+  StrokeSet out;
+  for (const OrientedSegment& piece : p.boundary)
+    if (const NetworkCurve* c = net.find_curve(piece.curve)) out.insert(static_cast<std::int64_t>(c->source_stroke) - 1);
+  return out;
+}
+
+// A point on the patch (its first triangle's centroid), for a
+// DeletePatchEvent that must pick exactly this patch.
+std::optional<Vec3> point_on(const Patch& p) {
+  if (p.mesh.faces.empty()) return std::nullopt;
+  const auto& f = p.mesh.faces.front();
+  return (p.mesh.vertices[f[0]] + p.mesh.vertices[f[1]] + p.mesh.vertices[f[2]]) / 3.0;
+}
+
+}  // namespace
+
+ReplayFigures& ReplayFigures::operator+=(const ReplayFigures& o) {
+  cassie_created += o.cassie_created;
+  ours_created += o.ours_created;
+  matched_created += o.matched_created;
+  matched_elsewhere += o.matched_elsewhere;
+  ours_removed += o.ours_removed;
+  cassie_final += o.cassie_final;
+  ours_final += o.ours_final;
+  matched_final += o.matched_final;
+  return *this;
+}
+
+ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmParams& params,
+                                   const ReplayOptions& options) {
+  ReplayResult result;
+  result.warnings = session.warnings;
+
+  std::vector<Step> steps;
+  for (std::size_t i = 0; i < session.strokes.size(); ++i) {
+    const CassieStroke& s = session.strokes[i];
+    steps.push_back({s.created, 0, i, "stroke", s.id});
+    if (s.deleted) steps.push_back({*s.deleted, 1, i, "delete", s.id});
+  }
+  if (options.user_patch_edits)
+    for (std::size_t i = 0; i < session.patches.size(); ++i) {
+      const CassiePatch& p = session.patches[i];
+      if (!p.automatic && p.created && p.hand) steps.push_back({*p.created, 2, i, "add_patch", p.id});
+      if (p.deleted_by_hand) steps.push_back({*p.deleted_by_hand, 3, i, "delete_patch", p.id});
+    }
+  std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
+    return a.time != b.time ? a.time < b.time : a.order < b.order;
+  });
+
+  auto surfacer = std::make_shared<TimedSoapfilm>(params);
+  Session live(Workspace{}, std::make_shared<CassieCurves>(session, options.graph), surfacer);
+  std::map<PatchId, StrokeSet> ours;          // our alive patches -> strokes
+  std::map<PatchId, bool> automatic;
+  std::map<std::int64_t, PatchId> of_cassie;  // CASSIE manual patch -> ours made for it
+  std::vector<double> group_times;
+  constexpr double same_time = 1e-6;  // s
+
+  for (const Step& st : steps) {
+    ReplayEvent ev;
+    ev.kind = st.kind;
+    ev.element = st.element;
+    ev.time = st.time;
+    const bool stroke_event = st.kind == "stroke" || st.kind == "delete";
+    if (stroke_event && (group_times.empty() || st.time - group_times.back() > same_time)) group_times.push_back(st.time);
+    ev.group = group_times.empty() ? 0 : group_times.size() - 1;
+
+    StepReport report;
+    if (st.kind == "stroke") {
+      report = live.handle(Event{st.time, StrokeEvent{placeholder_stroke(stroke_id(st.element))}});
+    } else if (st.kind == "delete") {
+      report = live.handle(Event{st.time, DeleteStrokeEvent{stroke_id(st.element)}});
+    } else if (st.kind == "add_patch") {
+      report = live.handle(Event{st.time, AddPatchEvent{*session.patches[st.index].hand}});
+    } else {
+      // The user deleted a CASSIE patch: delete ours over the same strokes
+      // (the one made for it if it was a manual one).
+      const CassiePatch& cp = session.patches[st.index];
+      std::optional<PatchId> target;
+      if (auto it = of_cassie.find(cp.id); it != of_cassie.end() && ours.count(it->second)) target = it->second;
+      for (const auto& [id, strokes] : ours)
+        if (!target && strokes == cp.strokes) target = id;
+      if (!target) {
+        ev.error = "no patch of ours over the strokes of CASSIE patch " + std::to_string(cp.id);
+      } else {
+        const Patch& p = live.sketch().network.patches().at(*target);
+        if (const auto at = point_on(p); at)
+          report = live.handle(Event{st.time, DeletePatchEvent{*at}});
+        else
+          ev.error = "patch " + std::to_string(*target) + " has no mesh to point at";
+      }
+    }
+    if (ev.error.empty()) ev.error = report.error;
+    surfacer->take(ev);
+
+    // What changed: patch ids are never reused, so a diff of the id sets.
+    const Network& net = live.sketch().network;
+    for (auto it = ours.begin(); it != ours.end();) {
+      if (net.patches().count(it->first)) {
+        ++it;
+        continue;
+      }
+      if (automatic[it->first]) {
+        ev.removed.push_back(it->second);
+        ++result.figures.ours_removed;
+      }
+      it = ours.erase(it);
+    }
+    const PatchId first_new = ours.empty() ? 0 : ours.rbegin()->first + 1;
+    for (auto it = net.patches().lower_bound(first_new); it != net.patches().end(); ++it) {
+      if (ours.count(it->first)) continue;
+      const StrokeSet strokes = strokes_of(net, it->second);
+      ours[it->first] = strokes;
+      automatic[it->first] = it->second.automatic;
+      if (it->second.automatic) {
+        ev.added.push_back(strokes);
+      } else if (st.kind == "add_patch") {
+        of_cassie[st.element] = it->first;
+      }
+    }
+    result.events.push_back(std::move(ev));
+  }
+
+  // Along the way: CASSIE's automatic patches by group.
+  auto group_of = [&](double t) -> std::optional<std::size_t> {
+    auto it = std::upper_bound(group_times.begin(), group_times.end(), t + 1e-4);
+    if (it == group_times.begin()) return std::nullopt;
+    return static_cast<std::size_t>(it - group_times.begin() - 1);
+  };
+  std::map<std::pair<std::size_t, StrokeSet>, int> cassie_at, ours_at;
+  std::set<StrokeSet> ours_ever;
+  for (const ReplayEvent& e : result.events)
+    for (const StrokeSet& s : e.added) {
+      ++ours_at[{e.group, s}];
+      ours_ever.insert(s);
+      ++result.figures.ours_created;
+    }
+  std::set<std::int64_t> alive;
+  for (const CassieStroke& s : session.strokes)
+    if (!s.deleted) alive.insert(s.id);
+  std::set<StrokeSet> cassie_final;
+  for (const CassiePatch& p : session.patches) {
+    if (!p.automatic || !p.created) continue;
+    ++result.figures.cassie_created;
+    if (const auto g = group_of(*p.created)) ++cassie_at[{*g, p.strokes}];
+    const bool all_alive = std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); });
+    if (!p.deleted_by_hand && all_alive && !p.strokes.empty()) cassie_final.insert(p.strokes);
+  }
+  for (const auto& [key, n] : cassie_at) {
+    const int m = std::min(n, ours_at.count(key) ? ours_at.at(key) : 0);
+    result.figures.matched_created += m;
+    if (n > m && ours_ever.count(key.second)) result.figures.matched_elsewhere += n - m;
+  }
+  // At the end.
+  std::set<StrokeSet> ours_final;
+  for (const auto& [id, strokes] : ours)
+    if (automatic[id]) ours_final.insert(strokes);
+  result.figures.cassie_final = static_cast<int>(cassie_final.size());
+  result.figures.ours_final = static_cast<int>(ours_final.size());
+  for (const StrokeSet& s : cassie_final) result.figures.matched_final += ours_final.count(s) ? 1 : 0;
+  return result;
+}
+
+}  // namespace sketchlab::soapfilm
