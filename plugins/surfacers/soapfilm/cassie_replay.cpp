@@ -6,26 +6,41 @@
 #include <ctime>
 #include <map>
 
+#include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/session.hpp"
 #include "soapfilm_surfacer.hpp"
 
 namespace sketchlab::soapfilm {
 namespace {
 
-// CASSIE stroke id k is stroke k + 1 here (ids start at 1).
-StrokeId stroke_id(std::int64_t cassie) { return static_cast<StrokeId>(cassie + 1); }
+// What the replay knows of each curve it added.
+struct Curves {
+  std::map<CurveId, std::int64_t> cassie_of;  // network curve -> CASSIE stroke
+  std::map<std::int64_t, CurveId> curve_of;   // and back
+};
 
-// Adds each replayed stroke's CASSIE curve with CASSIE's graph.
+// Adds the CASSIE curves of one action (a stroke and its mirrored twin) with
+// CASSIE's graph; the session sees one stroke, whose id they all carry.
 class CassieCurves : public Corrector {
  public:
-  CassieCurves(const CassieSession& session, const CassieGraphParams& params) : params_(params) {
-    for (const CassieStroke& s : session.strokes) strokes_[stroke_id(s.id)] = &s;
-  }
+  CassieCurves(const CassieSession& session, const CassieGraphParams& params, Curves& curves)
+      : session_(&session), params_(params), curves_(&curves) {}
+  // The strokes (indices into session.strokes) the next StrokeEvent adds.
+  void next(std::vector<std::size_t> strokes) { next_ = std::move(strokes); }
   Correction correct(const Stroke& stroke, const Sketch& sketch) override {
     Correction c;
-    const CassieStroke& s = *strokes_.at(stroke.id);
+    std::vector<CassieCurve> in;
+    for (std::size_t i : next_) {
+      const CassieStroke& s = session_->strokes[i];
+      in.push_back({stroke.id, s.curve, s.canvas_scale});
+    }
     try {
-      c.edit = cassie_graph_edit(sketch.network, stroke.id, s.curve, s.canvas_scale, params_);
+      c.edit = cassie_graph_edit(sketch.network, in, params_);
+      for (std::size_t k = 0; k < next_.size(); ++k) {
+        const std::int64_t id = session_->strokes[next_[k]].id;
+        curves_->cassie_of[c.edit.curves_added[k].id] = id;
+        curves_->curve_of[id] = c.edit.curves_added[k].id;
+      }
     } catch (const std::exception& e) {
       c.error = e.what();
     }
@@ -33,8 +48,10 @@ class CassieCurves : public Corrector {
   }
 
  private:
+  const CassieSession* session_;
   CassieGraphParams params_;
-  std::map<StrokeId, const CassieStroke*> strokes_;
+  Curves* curves_;
+  std::vector<std::size_t> next_;
 };
 
 double thread_cpu_ms() {
@@ -82,9 +99,8 @@ class TimedSoapfilm : public Surfacer {
 struct Step {
   double time = 0.0;
   int order = 0;  // at one time: stroke creations, deletions, then patch edits
-  std::size_t index = 0;
   std::string kind;
-  std::int64_t element = 0;
+  std::vector<std::size_t> index;  // into session.strokes (all created or deleted at `time`) or patches (one)
 };
 
 Stroke placeholder_stroke(StrokeId id) {
@@ -98,10 +114,9 @@ Stroke placeholder_stroke(StrokeId id) {
   return s;
 }
 
-StrokeSet strokes_of(const Network& net, const Patch& p) {
+StrokeSet strokes_of(const Curves& curves, const Patch& p) {
   StrokeSet out;
-  for (const OrientedSegment& piece : p.boundary)
-    if (const NetworkCurve* c = net.find_curve(piece.curve)) out.insert(static_cast<std::int64_t>(c->source_stroke) - 1);
+  for (const OrientedSegment& piece : p.boundary) out.insert(curves.cassie_of.at(piece.curve));
   return out;
 }
 
@@ -132,50 +147,87 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
   ReplayResult result;
   result.warnings = session.warnings;
 
+  // Strokes created (deleted) at one time are one action: a stroke and its
+  // mirrored twin, as CASSIE adds (removes) them.
   std::vector<Step> steps;
+  std::map<double, std::vector<std::size_t>> created, deleted;
   for (std::size_t i = 0; i < session.strokes.size(); ++i) {
     const CassieStroke& s = session.strokes[i];
-    steps.push_back({s.created, 0, i, "stroke", s.id});
-    if (s.deleted) steps.push_back({*s.deleted, 1, i, "delete", s.id});
+    created[s.created].push_back(i);
+    if (s.deleted) deleted[*s.deleted].push_back(i);
   }
+  for (const auto& [t, list] : created) steps.push_back({t, 0, "stroke", list});
+  for (const auto& [t, list] : deleted) steps.push_back({t, 1, "delete", list});
   if (options.user_patch_edits)
     for (std::size_t i = 0; i < session.patches.size(); ++i) {
       const CassiePatch& p = session.patches[i];
-      if (!p.automatic && p.created && p.hand) steps.push_back({*p.created, 2, i, "add_patch", p.id});
-      if (p.deleted_by_hand) steps.push_back({*p.deleted_by_hand, 3, i, "delete_patch", p.id});
+      if (!p.automatic && p.created && p.hand) steps.push_back({*p.created, 2, "add_patch", {i}});
+      if (p.deleted_by_hand) steps.push_back({*p.deleted_by_hand, 3, "delete_patch", {i}});
     }
   std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
     return a.time != b.time ? a.time < b.time : a.order < b.order;
   });
 
   auto surfacer = std::make_shared<TimedSoapfilm>(params);
-  Session live(Workspace{}, std::make_shared<CassieCurves>(session, options.graph), surfacer);
+  Curves curves;
+  auto corrector = std::make_shared<CassieCurves>(session, options.graph, curves);
+  Session live(Workspace{}, corrector, surfacer);
   std::map<PatchId, StrokeSet> ours;          // our alive patches -> strokes
   std::map<PatchId, bool> automatic;
   std::map<std::int64_t, PatchId> of_cassie;  // CASSIE manual patch -> ours made for it
+  std::map<std::int64_t, StrokeId> action_of;  // CASSIE stroke -> the session stroke that added it
   std::vector<double> group_times;
-  constexpr double same_time = 1e-6;  // s
+  StrokeId next_stroke = 1;
 
   for (const Step& st : steps) {
     ReplayEvent ev;
     ev.kind = st.kind;
-    ev.element = st.element;
     ev.time = st.time;
     const bool stroke_event = st.kind == "stroke" || st.kind == "delete";
-    if (stroke_event && (group_times.empty() || st.time - group_times.back() > same_time)) group_times.push_back(st.time);
+    if (stroke_event) {
+      ev.element = session.strokes[st.index.front()].id;
+      group_times.push_back(st.time);
+    } else {
+      ev.element = session.patches[st.index.front()].id;
+    }
     ev.group = group_times.empty() ? 0 : group_times.size() - 1;
 
     StepReport report;
     if (st.kind == "stroke") {
-      report = live.handle(Event{st.time, StrokeEvent{placeholder_stroke(stroke_id(st.element))}});
+      const StrokeId id = next_stroke++;
+      for (std::size_t i : st.index) action_of[session.strokes[i].id] = id;
+      corrector->next(st.index);
+      report = live.handle(Event{st.time, StrokeEvent{placeholder_stroke(id)}});
     } else if (st.kind == "delete") {
-      report = live.handle(Event{st.time, DeleteStrokeEvent{stroke_id(st.element)}});
+      // Whole actions by their session stroke; a twin deleted alone by a
+      // point on it.
+      std::map<StrokeId, int> left;
+      for (const auto& [cassie, id] : action_of)
+        if (curves.curve_of.count(cassie) && live.sketch().network.find_curve(curves.curve_of.at(cassie))) ++left[id];
+      std::map<StrokeId, std::vector<std::int64_t>> asked;
+      for (std::size_t i : st.index) asked[action_of[session.strokes[i].id]].push_back(session.strokes[i].id);
+      for (const auto& [id, list] : asked) {
+        if (static_cast<int>(list.size()) == left[id]) {
+          report = live.handle(Event{st.time, DeleteStrokeEvent{id}});
+        } else {
+          for (std::int64_t cassie : list) {
+            const CurveId c = curves.curve_of.at(cassie);
+            const NetworkCurve* nc = live.sketch().network.find_curve(c);
+            if (!nc) continue;
+            report = live.handle(Event{st.time, DeleteNearEvent{evaluate(nc->curve, 0.5 * nc->curve.t_max()), 1e-9}});
+            if (live.sketch().network.find_curve(c))
+              result.warnings.push_back(session.name + ": stroke " + std::to_string(cassie) +
+                                        " lies on another curve and could not be deleted alone");
+          }
+        }
+        if (!report.error.empty()) ev.error = report.error;
+      }
     } else if (st.kind == "add_patch") {
-      report = live.handle(Event{st.time, AddPatchEvent{*session.patches[st.index].hand}});
+      report = live.handle(Event{st.time, AddPatchEvent{*session.patches[st.index.front()].hand}});
     } else {
       // The user deleted a CASSIE patch: delete ours over the same strokes
       // (the one made for it if it was a manual one).
-      const CassiePatch& cp = session.patches[st.index];
+      const CassiePatch& cp = session.patches[st.index.front()];
       std::optional<PatchId> target;
       if (auto it = of_cassie.find(cp.id); it != of_cassie.end() && ours.count(it->second)) target = it->second;
       for (const auto& [id, strokes] : ours)
@@ -209,13 +261,13 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     const PatchId first_new = ours.empty() ? 0 : ours.rbegin()->first + 1;
     for (auto it = net.patches().lower_bound(first_new); it != net.patches().end(); ++it) {
       if (ours.count(it->first)) continue;
-      const StrokeSet strokes = strokes_of(net, it->second);
+      const StrokeSet strokes = strokes_of(curves, it->second);
       ours[it->first] = strokes;
       automatic[it->first] = it->second.automatic;
       if (it->second.automatic) {
         ev.added.push_back(strokes);
       } else if (st.kind == "add_patch") {
-        of_cassie[st.element] = it->first;
+        of_cassie[ev.element] = it->first;
       }
     }
     result.events.push_back(std::move(ev));

@@ -1,4 +1,5 @@
-// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--events CSV]
+// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
+//                  [--events CSV]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -9,7 +10,10 @@
 //    same event, and its patches at the end (cassie_replay.hpp).
 // Prints a markdown table per session and in total (Patch-system sessions,
 // the only ones where CASSIE made patches), then "name value unit" lines.
-// --param sets a plugin parameter (as in `sketchlab plugins soapfilm`).
+// --param sets a plugin parameter (as in `sketchlab plugins soapfilm`);
+// --no-user-edits replays CASSIE's curves only (not its users' manual patch
+// additions and deletions); --meets sets the distance at which a replayed
+// Bézier joint meets an alive curve (CassieGraphParams::on_curve).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -69,13 +73,17 @@ int main(int argc, char** argv) {
           throw std::invalid_argument("--param " + kv +
                                       ": expected NAME=VALUE with NAME a soapfilm parameter (sketchlab plugins soapfilm)");
         given[spec->name] = parse_param_value(*spec, kv.substr(eq + 1));
+      } else if (a == "--meets" && i + 1 < argc) {
+        // Replay: a joint this close (m) to an alive curve meets it.
+        options.graph.on_curve = std::stod(argv[++i]);
+        if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
       } else if (a == "--no-user-edits") {
         options.user_patch_edits = false;
       } else if (a == "--events" && i + 1 < argc) {
         events_csv = argv[++i];
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--events CSV]\n";
+                     "[--meets M] [--events CSV]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
