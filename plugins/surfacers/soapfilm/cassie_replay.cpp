@@ -76,7 +76,7 @@ class TimedSoapfilm : public Surfacer {
     e.surfacer_wall_ms = wall_ms_;
     e.surfacer_cpu_ms = cpu_ms_;
     e.patches_meshed = static_cast<int>(per_patch_.size());
-    for (const PatchMeshTimings& t : per_patch_) e.mesh_cpu_ms.push_back(t.fill_ms + t.remesh_ms + t.smooth_ms);
+    e.meshed = per_patch_;
     wall_ms_ = cpu_ms_ = 0.0;
     per_patch_.clear();
   }

@@ -58,7 +58,7 @@ struct ReplayEvent {
   std::vector<StrokeSet> added, removed;  // our automatic patches (strokes)
   double surfacer_wall_ms = 0.0, surfacer_cpu_ms = 0.0;  // this plugin's update/command
   int patches_meshed = 0;
-  std::vector<double> mesh_cpu_ms;  // per meshed patch (fill + remesh + smooth)
+  std::vector<PatchMeshTimings> meshed;  // per patch meshed: CPU ms of each stage
 };
 
 struct ReplayResult {

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     csv << "session,event,kind,element,time,group,added,removed,surfacer_wall_ms,surfacer_cpu_ms,patches_meshed\n";
   }
   std::vector<Row> rows;
-  std::vector<double> event_cpu, event_wall, mesh_cpu;
+  std::vector<double> event_cpu, event_wall, mesh_cpu, stage[3];
   int failures = 0;
   for (const std::string& name : sessions) {
     Row row;
@@ -141,7 +141,12 @@ int main(int argc, char** argv) {
           event_cpu.push_back(e.surfacer_cpu_ms);
           event_wall.push_back(e.surfacer_wall_ms);
         }
-        mesh_cpu.insert(mesh_cpu.end(), e.mesh_cpu_ms.begin(), e.mesh_cpu_ms.end());
+        for (const PatchMeshTimings& t : e.meshed) {
+          mesh_cpu.push_back(t.fill_ms + t.remesh_ms + t.smooth_ms + t.output_ms);
+          stage[0].push_back(t.fill_ms);
+          stage[1].push_back(t.remesh_ms);
+          stage[2].push_back(t.smooth_ms);
+        }
         if (csv)
           csv << name << ',' << i << ',' << e.kind << ',' << e.element << ',' << e.time << ',' << e.group << ','
               << e.added.size() << ',' << e.removed.size() << ',' << e.surfacer_wall_ms << ',' << e.surfacer_cpu_ms
@@ -215,6 +220,12 @@ int main(int argc, char** argv) {
   line("replay.mesh_per_patch_cpu_p50", mesh.median, "ms");
   line("replay.mesh_per_patch_cpu_p95", mesh.p95, "ms");
   line("replay.mesh_per_patch_cpu_max", mesh.max, "ms");
+  const char* stage_name[] = {"fill", "remesh", "smooth"};
+  for (int i = 0; i < 3; ++i) {
+    const Distribution d = distribution(stage[i]);
+    line(std::string("replay.mesh_") + stage_name[i] + "_cpu_p50", d.median, "ms");
+    line(std::string("replay.mesh_") + stage_name[i] + "_cpu_p95", d.p95, "ms");
+  }
   line("failures", failures, "sessions");
   return failures ? 1 : 0;
 }
