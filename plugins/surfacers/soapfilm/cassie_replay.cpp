@@ -1,14 +1,12 @@
 #include "cassie_replay.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <ctime>
 #include <map>
 
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/session.hpp"
-#include "soapfilm_surfacer.hpp"
+#include "timed_soapfilm.hpp"
 
 namespace sketchlab::soapfilm {
 namespace {
@@ -52,48 +50,6 @@ class CassieCurves : public Corrector {
   CassieGraphParams params_;
   Curves* curves_;
   std::vector<std::size_t> next_;
-};
-
-double thread_cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
-}
-
-// This plugin's surfacer, timing each call (wall and CPU of the calling
-// thread) and keeping the per-patch meshing CPU times.
-class TimedSoapfilm : public Surfacer {
- public:
-  explicit TimedSoapfilm(const SoapfilmParams& params) : params_(params) {}
-  SurfaceUpdate update(const Sketch& sketch, const Edit& last) override {
-    return timed([&] { return soapfilm_update(sketch, last, params_, &per_patch_); });
-  }
-  SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) override {
-    return timed([&] { return soapfilm_command(sketch, command, params_); });
-  }
-  // Figures of the calls since the last take().
-  void take(ReplayEvent& e) {
-    e.surfacer_wall_ms = wall_ms_;
-    e.surfacer_cpu_ms = cpu_ms_;
-    e.patches_meshed = static_cast<int>(per_patch_.size());
-    e.meshed = per_patch_;
-    wall_ms_ = cpu_ms_ = 0.0;
-    per_patch_.clear();
-  }
-
- private:
-  template <class F>
-  SurfaceUpdate timed(F&& f) {
-    const auto w0 = std::chrono::steady_clock::now();
-    const double c0 = thread_cpu_ms();
-    SurfaceUpdate u = f();
-    cpu_ms_ += thread_cpu_ms() - c0;
-    wall_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - w0).count();
-    return u;
-  }
-  SoapfilmParams params_;
-  double wall_ms_ = 0.0, cpu_ms_ = 0.0;
-  std::vector<PatchMeshTimings> per_patch_;
 };
 
 struct Step {
@@ -243,7 +199,11 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       }
     }
     if (ev.error.empty()) ev.error = report.error;
-    surfacer->take(ev);
+    SurfacerCost cost = surfacer->take();
+    ev.surfacer_wall_ms = cost.wall_ms;
+    ev.surfacer_cpu_ms = cost.cpu_ms;
+    ev.patches_meshed = static_cast<int>(cost.meshed.size());
+    ev.meshed = std::move(cost.meshed);
 
     // What changed: patch ids are never reused, so a diff of the id sets.
     const Network& net = live.sketch().network;

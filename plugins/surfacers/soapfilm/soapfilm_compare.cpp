@@ -66,13 +66,7 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       if (a == "--param" && i + 1 < argc) {
-        const std::string kv = argv[++i];
-        const auto eq = kv.find('=');
-        const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == kv.substr(0, eq); });
-        if (eq == std::string::npos || spec == specs.end())
-          throw std::invalid_argument("--param " + kv +
-                                      ": expected NAME=VALUE with NAME a soapfilm parameter (sketchlab plugins soapfilm)");
-        given[spec->name] = parse_param_value(*spec, kv.substr(eq + 1));
+        parse_param_assignment(argv[++i], given);
       } else if (a == "--meets" && i + 1 < argc) {
         // Replay: a joint this close (m) to an alive curve meets it.
         options.graph.on_curve = std::stod(argv[++i]);

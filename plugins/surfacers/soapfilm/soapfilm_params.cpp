@@ -1,6 +1,8 @@
 #include "soapfilm_params.hpp"
 
+#include <algorithm>
 #include <numbers>
+#include <stdexcept>
 
 namespace sketchlab::soapfilm {
 
@@ -73,6 +75,17 @@ SoapfilmParams soapfilm_params(const Params& p) {
   s.mesh.smooth_iterations = static_cast<int>(p.integer("smooth_iterations"));
   s.mesh.smoothing_time = p.real("smoothing_time");
   return s;
+}
+
+void parse_param_assignment(const std::string& assignment, std::map<std::string, ParamValue>& given) {
+  const std::vector<ParamSpec> specs = soapfilm_param_specs();
+  const auto eq = assignment.find('=');
+  const std::string name = assignment.substr(0, eq);
+  const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
+  if (eq == std::string::npos || spec == specs.end())
+    throw std::invalid_argument("--param " + assignment +
+                                ": expected NAME=VALUE with NAME a soapfilm parameter (sketchlab plugins soapfilm)");
+  given[spec->name] = parse_param_value(*spec, assignment.substr(eq + 1));
 }
 
 }  // namespace sketchlab::soapfilm
