@@ -16,7 +16,7 @@
 using namespace sketchlab;
 
 TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[soapfilm][slow]") {
-  const auto dir = test::source_path("data/cassie");
+  const std::filesystem::path dir = test::source_path("data/cassie");
   const soapfilm::SoapfilmParams params;
   soapfilm::FidelityReport final;
   soapfilm::ReplayFigures replay;
