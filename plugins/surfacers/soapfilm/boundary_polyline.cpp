@@ -22,9 +22,9 @@ std::vector<double> piece_parameters(const Network& network, const OrientedSegme
       b = a + T;  // a single node closing the whole loop
     } else {
       CurveGraph graph(network);
-      const std::vector<int> cover = graph.covered_by(piece);
-      const bool direct = cover.empty() || std::abs(graph.segment(cover.front()).t0 - std::min(a, b)) <= 1e-9;
-      if (!direct) b = a < b ? b - T : b + T;
+      bool wraps = false;
+      graph.covered_by(piece, &wraps);
+      if (wraps) b = a < b ? b - T : b + T;
     }
   }
   std::vector<double> t(static_cast<std::size_t>(n));

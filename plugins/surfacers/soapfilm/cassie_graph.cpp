@@ -1,80 +1,96 @@
 #include "cassie_graph.hpp"
 
-#include <fstream>
-#include <nlohmann/json.hpp>
+#include <algorithm>
 #include <stdexcept>
 
+#include "cassie_json.hpp"
 #include "patch_upkeep.hpp"
 
 namespace sketchlab::soapfilm {
 namespace {
 
-nlohmann::json read_json(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path.string() + ": " + e.what());
-  }
+std::int64_t id_of(const nlohmann::json& item, const std::string& what) {
+  if (!item.is_object() || !item.contains("id") || !item.at("id").is_number_integer())
+    throw std::invalid_argument(what + " without an integer id");
+  return item.at("id").get<std::int64_t>();
 }
-
-Vec3 vec(const nlohmann::json& a) { return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()}; }
 
 }  // namespace
 
 CassieNetwork load_cassie_network(const std::filesystem::path& path) {
-  const nlohmann::json j = read_json(path);
+  const nlohmann::json j = read_cassie_json(path);
   try {
+    // Index the segments and nodes (ids unique), then build one curve per
+    // stroke from its segments in order.
     std::map<std::int64_t, const nlohmann::json*> segments;
-    for (const auto& s : j.at("segments")) segments[s.at("id").get<std::int64_t>()] = &s;
+    for (const auto& s : cassie_field(j, "segments", "the graph")) {
+      const std::int64_t id = id_of(s, "a segment");
+      if (!segments.emplace(id, &s).second) throw std::invalid_argument("segment " + std::to_string(id) + " listed twice");
+    }
     std::map<std::int64_t, Vec3> node_pos;
-    for (const auto& n : j.at("nodes")) node_pos[n.at("id").get<std::int64_t>()] = vec(n.at("position"));
+    for (const auto& n : cassie_field(j, "nodes", "the graph")) {
+      const std::int64_t id = id_of(n, "a node");
+      const std::string at = "node " + std::to_string(id);
+      if (!node_pos.emplace(id, cassie_point(cassie_field(n, "position", at), at + ": position")).second)
+        throw std::invalid_argument("node " + std::to_string(id) + " listed twice");
+    }
 
     CassieNetwork out;
     Edit edit;
     std::map<std::int64_t, Node> nodes;
-    for (const auto& stroke : j.at("strokes")) {
-      const std::int64_t sid = stroke.at("id").get<std::int64_t>();
+    std::map<std::int64_t, std::int64_t> owner;  // segment -> stroke using it
+    for (const auto& stroke : cassie_field(j, "strokes", "the graph")) {
+      const std::int64_t sid = id_of(stroke, "a stroke");
+      const std::string where = "stroke " + std::to_string(sid);
+      if (sid < 0) throw std::invalid_argument(where + ": negative id");
+      if (out.stroke_of.count(static_cast<CurveId>(sid + 1))) throw std::invalid_argument(where + " listed twice");
+      const nlohmann::json& seg_ids = cassie_field(stroke, "segments", where);
+      if (!seg_ids.is_array() || seg_ids.empty()) {
+        // Real data (02-2-1, hmd_sutherland): a stroke the graph export kept
+        // without its geometry. It bounds nothing; the rest still loads.
+        out.warnings.push_back(path.string() + ": " + where + " has no segments; skipped");
+        continue;
+      }
       NetworkCurve nc;
       nc.id = static_cast<CurveId>(sid + 1);
       nc.source_stroke = static_cast<StrokeId>(sid + 1);
       nc.layer = Layer::shape;
-      std::vector<Vec3>& cp = nc.curve.control_points;
       std::vector<std::pair<std::int64_t, double>> incidences;
-      for (const auto& seg_id : stroke.at("segments")) {
-        const nlohmann::json& seg = *segments.at(seg_id.get<std::int64_t>());
+      for (const auto& seg_id : seg_ids) {
+        if (!seg_id.is_number_integer()) throw std::invalid_argument(where + ": a segment id is not an integer");
+        const std::int64_t gid = seg_id.get<std::int64_t>();
+        const std::string at = where + ": segment " + std::to_string(gid);
+        const auto found = segments.find(gid);
+        if (found == segments.end()) throw std::invalid_argument(at + " does not exist");
+        if (const auto [it, fresh] = owner.emplace(gid, sid); !fresh)
+          throw std::invalid_argument(at + " already belongs to stroke " + std::to_string(it->second));
+        const nlohmann::json& seg = *found->second;
+        std::vector<Vec3>& cp = nc.curve.control_points;
         const double t_start = cp.empty() ? 0.0 : static_cast<double>((cp.size() - 1) / 3);
-        for (const auto& piece : seg.at("ctrl_pts")) {
-          // A cubic piece (4 points) or a straight one (2 points, stored as a
-          // cubic with inner points at thirds, like the kernel's lines).
-          std::vector<Vec3> q;
-          if (piece.size() == 4) {
-            for (const auto& x : piece) q.push_back(vec(x));
-          } else if (piece.size() == 2) {
-            const Vec3 a0 = vec(piece.at(0)), a1 = vec(piece.at(1));
-            q = {a0, a0 + (a1 - a0) / 3.0, a0 + 2.0 * (a1 - a0) / 3.0, a1};
-          } else {
-            throw std::runtime_error("a curve piece needs 4 (cubic) or 2 (line) control points");
-          }
-          for (std::size_t i = cp.empty() ? 0 : 1; i < 4; ++i) cp.push_back(q[i]);
-        }
+        const nlohmann::json& pieces = cassie_field(seg, "ctrl_pts", at);
+        append_cassie_pieces(nc.curve, pieces, at);
+        const Vec3 a = cassie_point(pieces.at(0).at(0), at + ": first point");
+        // Consecutive segments of a stroke share their joint.
+        if (t_start > 0.0 && (a - cp[static_cast<std::size_t>(3 * t_start)]).norm() > 1e-3)
+          throw std::invalid_argument(at + " starts " +
+                                      std::to_string((a - cp[static_cast<std::size_t>(3 * t_start)]).norm()) +
+                                      " m from where the previous segment ends");
         const double t_end = static_cast<double>((cp.size() - 1) / 3);
-        const Vec3 a = vec(seg.at("ctrl_pts").front().at(0)), b = cp.back();
-        const auto& ends = seg.at("nodes");
+        const Vec3 b = cp.back();
+        const auto& ends = cassie_field(seg, "nodes", at);
+        if (!ends.is_array() || ends.size() != 2) throw std::invalid_argument(at + ": needs 2 nodes");
+        if (!ends.at(0).is_number_integer() || !ends.at(1).is_number_integer())
+          throw std::invalid_argument(at + ": node ids must be integers");
         const std::int64_t n0 = ends.at(0).get<std::int64_t>(), n1 = ends.at(1).get<std::int64_t>();
+        for (std::int64_t n : {n0, n1})
+          if (!node_pos.count(n)) throw std::invalid_argument(at + ": node " + std::to_string(n) + " does not exist");
         // Which listed node is at the segment start: the closer one.
         const bool swap = (node_pos.at(n0) - a).norm() + (node_pos.at(n1) - b).norm() >
                           (node_pos.at(n1) - a).norm() + (node_pos.at(n0) - b).norm();
         incidences.emplace_back(swap ? n1 : n0, t_start);
         incidences.emplace_back(swap ? n0 : n1, t_end);
       }
-      const int K = static_cast<int>((cp.size() - 1) / 3);
-      nc.curve.sharp.assign(static_cast<std::size_t>(K + 1), false);
-      if (K >= 1 && (cp.front() - cp.back()).norm() < 1e-6) {
-        cp.back() = cp.front();
-        nc.curve.closed = true;
-      }
+      finish_cassie_curve(nc.curve);
       nc.keypoints = default_keypoints(nc.curve);
       for (const auto& [n, t] : incidences) {
         Node& node = nodes[n];
@@ -88,49 +104,42 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
       out.stroke_of[nc.id] = sid;
       edit.curves_added.push_back(std::move(nc));
     }
-    for (auto& [id, node] : nodes) edit.nodes_added.push_back(std::move(node));
+    for (auto& [id, node] : nodes) {
+      if (id < 0) throw std::invalid_argument("node " + std::to_string(id) + ": negative id");
+      edit.nodes_added.push_back(std::move(node));
+    }
     out.network.apply(edit);
     return out;
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error(path.string() + ": " + e.what());
+  } catch (const CassieFormatError&) {
+    throw;
   } catch (const std::exception& e) {
-    throw std::runtime_error(path.string() + ": malformed sketch graph (" + e.what() + ")");
+    throw CassieFormatError(path.string() + ": " + e.what());
   }
 }
 
-CassiePatches load_cassie_patches(const std::filesystem::path& path, const std::set<std::int64_t>& alive) {
-  const nlohmann::json j = read_json(path);
-  CassiePatches out;
-  try {
-    std::set<std::int64_t> deleted;  // interactionType 4: surface deleted by hand
-    for (const auto& s : j.at("systemStates"))
-      if (s.at("interactionType").get<int>() == 4) deleted.insert(s.at("elementID").get<std::int64_t>());
-    for (const auto& p : j.at("allCreatedPatches")) {
-      const bool automatic = p.at("foundByAlgo").get<bool>();
-      if (automatic) ++out.created_automatic;
-      if (deleted.count(p.at("id").get<std::int64_t>())) continue;
-      StrokeSet strokes;
-      bool ok = true;
-      for (const auto& s : p.at("strokesID")) {
-        strokes.insert(s.get<std::int64_t>());
-        ok = ok && alive.count(s.get<std::int64_t>());
-      }
-      if (!ok || strokes.empty()) continue;
-      (automatic ? out.automatic : out.manual).insert(strokes);
-    }
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path.string() + ": malformed raw data (" + e.what() + ")");
-  }
-  return out;
+FidelityReport& FidelityReport::operator+=(const FidelityReport& o) {
+  cassie_automatic += o.cassie_automatic;
+  cassie_manual += o.cassie_manual;
+  ours += o.ours;
+  found += o.found;
+  missed += o.missed;
+  extra += o.extra;
+  extra_matching_manual += o.extra_matching_manual;
+  warnings.insert(warnings.end(), o.warnings.begin(), o.warnings.end());
+  return *this;
 }
 
-FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_json,
-                                   const std::filesystem::path& raw_data_json,
+FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_json, const CassieSession& session,
                                    const CycleSearchParams& params) {
   const CassieNetwork net = load_cassie_network(sketch_graph_json);
   std::set<std::int64_t> alive;
   for (const auto& [c, s] : net.stroke_of) alive.insert(s);
-  const CassiePatches cassie = load_cassie_patches(raw_data_json, alive);
+  std::set<StrokeSet> automatic, manual;
+  for (const CassiePatch& p : session.patches) {
+    if (p.deleted_by_hand || p.strokes.empty()) continue;
+    if (!std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); })) continue;
+    (p.automatic ? automatic : manual).insert(p.strokes);
+  }
   std::set<StrokeSet> ours;
   for (const auto& cycle : detect_all_cycles(net.network, params)) {
     StrokeSet s;
@@ -138,14 +147,15 @@ FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_jso
     ours.insert(s);
   }
   FidelityReport r;
-  r.cassie_automatic = static_cast<int>(cassie.automatic.size());
-  r.cassie_manual = static_cast<int>(cassie.manual.size());
+  r.warnings = net.warnings;
+  r.cassie_automatic = static_cast<int>(automatic.size());
+  r.cassie_manual = static_cast<int>(manual.size());
   r.ours = static_cast<int>(ours.size());
-  for (const StrokeSet& s : cassie.automatic) (ours.count(s) ? r.found : r.missed)++;
+  for (const StrokeSet& s : automatic) (ours.count(s) ? r.found : r.missed)++;
   for (const StrokeSet& s : ours)
-    if (!cassie.automatic.count(s)) {
+    if (!automatic.count(s)) {
       ++r.extra;
-      if (cassie.manual.count(s)) ++r.extra_matching_manual;
+      if (manual.count(s)) ++r.extra_matching_manual;
     }
   return r;
 }

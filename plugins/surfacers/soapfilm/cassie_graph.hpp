@@ -2,14 +2,15 @@
 // Fidelity to the original: rebuild a session's final curve network from
 // CASSIE's own sketch_graph export (data/cassie/sketch_graph/<session>.json),
 // run this plugin's cycle detection on it, and compare the cycles with the
-// patches CASSIE created (data/cassie/raw_data/<session>.json,
-// allCreatedPatches), by their bounding strokes.
+// patches CASSIE created (cassie_session.hpp), by their bounding strokes.
 #include <filesystem>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "cassie_json.hpp"
+#include "cassie_session.hpp"
 #include "cycle_search.hpp"
 #include "sketchlab/network.hpp"
 
@@ -18,36 +19,35 @@ namespace sketchlab::soapfilm {
 struct CassieNetwork {
   Network network;                            // curve id = stroke id + 1, node id = graph node id + 1
   std::map<CurveId, std::int64_t> stroke_of;  // curve -> CASSIE stroke id
+  std::vector<std::string> warnings;          // data quirks skipped (file, element, what)
 };
 
 // Curves are each stroke's segments joined in order (cubic pieces), nodes
-// the graph nodes with an incidence at every segment end they bound.
-// Throws std::runtime_error naming the file on malformed input.
+// the graph nodes with an incidence at every segment end they bound. A
+// stroke listed without segments (real data: 02-2-1, hmd_sutherland) is
+// skipped with a warning. Throws CassieFormatError naming the file and the
+// element (stroke, segment, node, piece, field) on malformed input: a missing
+// field, an unknown or repeated id, a piece of neither 2 nor 4 points, a
+// non-finite coordinate, consecutive segments that do not meet (1 mm).
 CassieNetwork load_cassie_network(const std::filesystem::path& sketch_graph_json);
-
-using StrokeSet = std::set<std::int64_t>;
-
-struct CassiePatches {
-  std::set<StrokeSet> automatic;  // foundByAlgo, strokes all alive, not deleted by hand
-  std::set<StrokeSet> manual;     // the same for patches the user added
-  int created_automatic = 0;      // every automatic patch ever created
-};
-
-// `alive`: the strokes of the final network.
-CassiePatches load_cassie_patches(const std::filesystem::path& raw_data_json, const std::set<std::int64_t>& alive);
 
 struct FidelityReport {
   int cassie_automatic = 0;  // CASSIE's automatic patches (unique stroke sets) on the final network
-  int cassie_manual = 0;
+  int cassie_manual = 0;     // the same for the patches its users added by hand
   int ours = 0;              // cycles found by this plugin (unique stroke sets)
   int found = 0;             // ours ∩ CASSIE automatic
   int missed = 0;            // CASSIE automatic not found
   int extra = 0;             // ours not among CASSIE automatic
   int extra_matching_manual = 0;  // of the extras, patches the CASSIE user added by hand
+  std::vector<std::string> warnings;
+  FidelityReport& operator+=(const FidelityReport& o);
 };
 
-FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_json,
-                                   const std::filesystem::path& raw_data_json,
+// CASSIE's set: the automatic patches (foundByAlgo) of `session` not deleted
+// by hand whose strokes all are in the final network. It over-counts what
+// CASSIE showed at the end: a patch later broken by a crossing stroke keeps
+// its strokes alive (CASSIE logs no automatic deletion).
+FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_json, const CassieSession& session,
                                    const CycleSearchParams& params);
 
 }  // namespace sketchlab::soapfilm

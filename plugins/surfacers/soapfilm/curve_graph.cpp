@@ -52,7 +52,10 @@ const std::vector<int>& CurveGraph::segments_of(CurveId curve) {
   std::size_t start = 0;
   if (nc->curve.closed) {
     while (start < n && !is_graph_node(pieces[start].node0)) ++start;
-    if (start == n) return out;  // a loop with no graph node bounds nothing
+    // A closed curve meeting nothing is one loop at its first node (CASSIE
+    // app, item 22: a closed stroke is one node with its segment attached
+    // twice); the pieces merge into it.
+    if (start == n) start = 0;
   }
   std::size_t i = start;
   const std::size_t count = nc->curve.closed ? n : n - start;
@@ -159,16 +162,15 @@ int CurveGraph::segment_at(CurveId curve, double t) {
   return best;
 }
 
-std::vector<int> CurveGraph::covered_by(const OrientedSegment& piece) {
-  std::vector<int> out;
+std::vector<int> CurveGraph::covered_by(const OrientedSegment& piece, bool* wraps) {
+  if (wraps) *wraps = false;
   const NetworkCurve* nc = network_->find_curve(piece.curve);
-  if (!nc) return out;
+  if (!nc) return {};
   const Curve& c = nc->curve;
   const double T = c.t_max();
   const std::vector<int>& segs = segments_of(piece.curve);
-  // Interval [lo, lo + len] in unwrapped parameter. On a closed curve the
-  // piece is read the way that is an exact union of graph segments (a
-  // wrapping piece and its complement share their end parameters).
+  // Interval [lo, lo + len] in unwrapped parameter: the graph segments inside
+  // it, and whether they cover it exactly.
   auto collect = [&](double lo, double len) {
     std::vector<int> hit;
     double covered = 0.0;
@@ -182,15 +184,40 @@ std::vector<int> CurveGraph::covered_by(const OrientedSegment& piece) {
         covered += sl;
       }
     }
-    return std::make_pair(hit, std::abs(covered - len) <= 1e-7 * std::max(1.0, T));
+    return std::make_pair(hit, !hit.empty() && std::abs(covered - len) <= 1e-7 * std::max(1.0, T));
+  };
+  // The graph segment holding all of [lo, lo + len], or -1.
+  auto containing = [&](double lo, double len) {
+    for (int s : segs) {
+      double rel = lo - segment(s).t0;
+      if (c.closed && rel < -t_eps) rel += T;
+      if (rel >= -t_eps && rel + len <= span(s) + t_eps) return s;
+    }
+    return -1;
   };
   const double a = std::min(piece.t_from, piece.t_to), b = std::max(piece.t_from, piece.t_to);
-  if (!c.closed) return collect(a, b - a).first;
+  if (!c.closed) {
+    if (auto direct = collect(a, b - a); direct.second) return direct.first;
+    if (const int s = containing(a, b - a); s >= 0) return {s};
+    return collect(a, b - a).first;
+  }
   if (a == b) return collect(a, T).first;
+  // On a closed curve a piece and its complement share their end parameters:
+  // it is read the way that is an exact union of graph segments, else the
+  // way one graph segment holds it.
   auto direct = collect(a, b - a);
-  if (direct.second && !direct.first.empty()) return direct.first;
   auto wrapped = collect(b, a + T - b);
-  if (wrapped.second && !wrapped.first.empty()) return wrapped.first;
+  if (direct.second) return direct.first;
+  if (wrapped.second) {
+    if (wraps) *wraps = true;
+    return wrapped.first;
+  }
+  if (const int s = containing(a, b - a); s >= 0) return {s};
+  if (const int s = containing(b, a + T - b); s >= 0) {
+    if (wraps) *wraps = true;
+    return {s};
+  }
+  if (wraps) *wraps = wrapped.first.size() > direct.first.size();
   return direct.first.size() >= wrapped.first.size() ? direct.first : wrapped.first;
 }
 

@@ -69,9 +69,12 @@ class CurveGraph {
   // is on none), or -1 when the curve has no graph segment.
   int segment_at(CurveId curve, double t);
 
-  // Graph segments covered by a kernel oriented segment (a patch boundary
-  // piece stored under a coarser or finer node set), in t order.
-  std::vector<int> covered_by(const OrientedSegment& piece);
+  // Graph segments a kernel oriented segment (a patch boundary piece) lies
+  // on, in t order: those it is a union of (stored under a coarser node set:
+  // a curve crossed it since), else the one holding it (stored under a finer
+  // node set: a deletion merged segments since). `wraps`, when given, tells
+  // whether a piece of a closed curve is read across the seam.
+  std::vector<int> covered_by(const OrientedSegment& piece, bool* wraps = nullptr);
 
  private:
   const Network* network_;

@@ -1,5 +1,6 @@
 #include "cycle_search.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -11,27 +12,57 @@
 namespace sketchlab::soapfilm {
 namespace {
 
-// Transport samples per unit of curve parameter (one cubic piece).
-constexpr int samples_per_piece = 8;
+// Clockwise angle in (0, 2π] from `from` to `to` around the unit normal n,
+// both projected onto its plane; -1 when either projects to (nearly) zero.
+double cw_angle(const Vec3& n, const Vec3& from, const Vec3& to) {
+  const Vec3 a = from - n.dot(from) * n, b = to - n.dot(to) * n;
+  if (a.norm() < 1e-9 || b.norm() < 1e-9 * std::max(1.0, to.norm())) return -1.0;
+  double cw = -std::atan2(n.dot(a.cross(b)), a.dot(b));
+  if (cw <= 1e-12) cw += 2.0 * std::numbers::pi;
+  return cw;
+}
+
+Vec3 project(const Vec3& n, const Vec3& v) { return v - n.dot(v) * n; }
+
+// A segment from a node back to itself (item 24: a cycle by itself).
+bool is_loop(const GraphSegment& g) { return g.node0 == g.node1; }
 
 }  // namespace
 
 int next_clockwise(const Vec3& normal, const Vec3& incoming, const std::vector<Vec3>& candidates) {
   const Vec3 n = normal.normalized();
-  const Vec3 in = incoming - n.dot(incoming) * n;
-  if (in.norm() < 1e-9) return -1;
   int best = -1;
   double best_angle = INFINITY;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const Vec3 d = candidates[i] - n.dot(candidates[i]) * n;
-    if (d.norm() < 1e-9 * std::max(1.0, candidates[i].norm())) continue;
-    // Counter-clockwise angle from `in` to d around n, then clockwise.
-    const double ccw = std::atan2(n.dot(in.cross(d)), in.dot(d));
-    double cw = -ccw;
-    if (cw <= 1e-12) cw += 2.0 * std::numbers::pi;
-    if (cw < best_angle) best_angle = cw, best = static_cast<int>(i);
+    const double a = cw_angle(n, incoming, candidates[i]);
+    if (a >= 0.0 && a < best_angle) best_angle = a, best = static_cast<int>(i);
   }
   return best;
+}
+
+int next_clockwise(const Vec3& normal, const Leaving& incoming, const std::vector<Leaving>& candidates,
+                   double tie_cos) {
+  const Vec3 n = normal.normalized();
+  const Vec3 ref = project(n, incoming.tangent).norm() > 1e-9 ? incoming.tangent : incoming.far;
+  int best = -1;
+  double best_angle = INFINITY;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const double a = cw_angle(n, ref, candidates[i].tangent);
+    if (a >= 0.0 && a < best_angle) best_angle = a, best = static_cast<int>(i);
+  }
+  if (best < 0) return best;
+  // Candidates leaving (nearly) along the best one: ordered by where they go.
+  const Leaving& b = candidates[static_cast<std::size_t>(best)];
+  if (b.far.norm() == 0.0) return best;
+  int tied = best;
+  double tied_angle = cw_angle(n, ref, b.far);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Leaving& c = candidates[i];
+    if (static_cast<int>(i) == best || c.tangent.dot(b.tangent) <= tie_cos || c.far.norm() == 0.0) continue;
+    const double a = cw_angle(n, ref, c.far);
+    if (a >= 0.0 && (tied_angle < 0.0 || a < tied_angle)) tied_angle = a, tied = static_cast<int>(i);
+  }
+  return tied;
 }
 
 std::vector<int> cycle_key(const Cycle& cycle) {
@@ -41,99 +72,120 @@ std::vector<int> cycle_key(const Cycle& cycle) {
   return key;
 }
 
+Leaving CycleSearcher::leaving(HalfEdge h) const {
+  const Vec3 chord = graph_->chord(h);
+  return {graph_->direction(h), chord.norm() > 1e-12 ? Vec3(chord.normalized()) : Vec3::Zero()};
+}
+
 const NodeFrame& CycleSearcher::frame(NodeId node) {
   if (auto it = frames_.find(node); it != frames_.end()) return it->second;
-  std::vector<Vec3> dirs;
-  for (const HalfEdge& h : graph_->outgoing(node)) dirs.push_back(graph_->direction(h));
-  return frames_.emplace(node, fit_node_frame(dirs, params_.frame)).first->second;
+  std::vector<Vec3> tangents, opposite;
+  for (const HalfEdge& h : graph_->outgoing(node)) {
+    const Leaving l = leaving(h);
+    tangents.push_back(l.tangent);
+    opposite.push_back(l.far);
+  }
+  return frames_.emplace(node, fit_node_frame(tangents, opposite, params_.frame)).first->second;
 }
 
 std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal) {
   const NodeId b = graph_->to(in);
+  const std::vector<HalfEdge> outs = graph_->outgoing(b);
+  if (outs.size() < 2) return std::nullopt;  // a dangling end (item 24)
   // Carry the normal to b along the segment (Bishop frame).
-  const int n = std::max(2, static_cast<int>(std::ceil(graph_->span(in.segment) * samples_per_piece)) + 1);
+  const int n = std::max(2, static_cast<int>(std::ceil(graph_->span(in.segment) * params_.transport_steps)) + 1);
   const Vec3 transported =
       parallel_transport(graph_->curve_of(in), graph_->parameters(in, n), in.forward, normal).normalized();
   std::vector<HalfEdge> cands;
-  for (const HalfEdge& h : graph_->outgoing(b))
-    if (!(h == in.reversed())) cands.push_back(h);
-  if (cands.empty()) return std::nullopt;
-  const Vec3 incoming = graph_->direction(in.reversed());
-  std::vector<Vec3> dirs;
-  for (const HalfEdge& h : cands) dirs.push_back(graph_->direction(h));
-
-  const NodeFrame& f = frame(b);
-  if (!f.defined || f.sharp) {
-    // Sharp node (§3.3.2.2, Fig. 3.16): sort around the transported normal,
-    // excluding segments far from its plane.
-    const double limit = std::cos(0.5 * std::numbers::pi - params_.frame.sharp_angle);
-    std::vector<HalfEdge> kept;
-    std::vector<Vec3> kept_dirs;
-    for (std::size_t i = 0; i < cands.size(); ++i)
-      if (!f.sharp || std::abs(transported.dot(dirs[i])) <= limit) {
-        kept.push_back(cands[i]);
-        kept_dirs.push_back(dirs[i]);
-      }
-    const int pick = next_clockwise(transported, incoming, kept_dirs);
-    if (pick < 0) return std::nullopt;
-    normal = transported;
-    return kept[static_cast<std::size_t>(pick)];
-  }
-
-  const double agreement = f.normal.dot(transported);
-  if (std::abs(agreement) < std::cos(params_.trim_angle)) {
-    // Trim curve (§3.3.2.2, Fig. 3.18c): the transported normal says nothing
-    // about the orientation at b; choose the turn from the segments' main
-    // directions projected on the plane of the transported normal, then
-    // orient the node normal so that its clockwise order agrees.
-    std::vector<Vec3> chords;
-    for (const HalfEdge& h : cands) chords.push_back(graph_->chord(h));
-    const int pick = next_clockwise(transported, graph_->chord(in.reversed()), chords);
-    if (pick >= 0) {
-      const int plus = next_clockwise(f.normal, incoming, dirs);
-      const int minus = next_clockwise(-f.normal, incoming, dirs);
-      if (plus == pick && minus != pick) {
-        normal = f.normal;
-        return cands[static_cast<std::size_t>(pick)];
-      }
-      if (minus == pick && plus != pick) {
-        normal = -f.normal;
-        return cands[static_cast<std::size_t>(pick)];
-      }
+  std::vector<Leaving> dirs;
+  for (const HalfEdge& h : outs)
+    if (!(h == in.reversed())) {
+      cands.push_back(h);
+      dirs.push_back(leaving(h));
     }
+  const Leaving incoming = leaving(in.reversed());
+  const NodeFrame& f = frame(b);
+  if (params_.transport_through_two && outs.size() == 2) {
+    // A node continuing one segment into one other (where two strokes meet
+    // end to end): no choice, and its fitted normal is unreliable (with
+    // collinear tangents it is the curves' binormal, across the surface).
+    // The transported normal is carried across it. Not the app's rule
+    // (README.md: measured).
+    normal = Eigen::Quaterniond::FromTwoVectors(-incoming.tangent, dirs[0].tangent) * transported;
+    return cands[0];
   }
-  // Smooth node (Fig. 3.15): flip the node normal to agree with the
-  // transported one, then take the next segment clockwise.
+  if (!f.defined || f.sharp) {
+    // Sharp node (§3.3.2.2, Fig. 3.16; item 24): sort around the transported
+    // normal among the segments close to its plane (the best one if none
+    // is), then carry the normal across the node by the rotation taking the
+    // arriving direction to the leaving one.
+    std::vector<std::size_t> kept;
+    std::size_t closest = 0;
+    double closest_len = -1.0;
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+      const double len = project(transported, dirs[i].tangent).norm();
+      if (!f.defined || len >= params_.sharp_projection) kept.push_back(i);
+      if (len > closest_len) closest_len = len, closest = i;
+    }
+    if (kept.empty()) kept.push_back(closest);
+    std::vector<Leaving> kept_dirs;
+    for (std::size_t i : kept) kept_dirs.push_back(dirs[i]);
+    const int pick = next_clockwise(transported, incoming, kept_dirs, params_.tie_cos);
+    if (pick < 0) return std::nullopt;
+    const std::size_t chosen = kept[static_cast<std::size_t>(pick)];
+    normal = Eigen::Quaterniond::FromTwoVectors(-incoming.tangent, dirs[chosen].tangent) * transported;
+    return cands[chosen];
+  }
+
+  // Smooth node (Fig. 3.15): the node normal, flipped to agree with the
+  // transported one.
+  const double agreement = f.normal.dot(transported);
   normal = agreement < 0.0 ? Vec3(-f.normal) : f.normal;
-  const int pick = next_clockwise(normal, incoming, dirs);
+  if (std::abs(agreement) < std::cos(params_.trim_angle)) {
+    // Trim curve (§3.3.2.2, Fig. 3.18c; item 24): the node normal says little
+    // about the way round; turn in the transported normal's plane, by the
+    // tangents, or by the directions to the opposite nodes where a tangent
+    // projects short.
+    auto in_plane = [&](const Leaving& l) {
+      Leaving p = l;
+      if (project(transported, l.tangent).norm() < params_.sharp_projection && l.far.norm() > 0.0) p.tangent = l.far;
+      return p;
+    };
+    std::vector<Leaving> planar;
+    for (const Leaving& l : dirs) planar.push_back(in_plane(l));
+    const int pick = next_clockwise(transported, in_plane(incoming), planar, params_.tie_cos);
+    if (pick < 0) return std::nullopt;
+    // The node normal is oriented the way its own clockwise order makes the
+    // same turn; when both ways do (or neither), it says nothing and the
+    // transported normal goes on.
+    const bool plus = next_clockwise(f.normal, incoming, dirs, params_.tie_cos) == pick;
+    const bool minus = next_clockwise(-f.normal, incoming, dirs, params_.tie_cos) == pick;
+    normal = plus == minus ? transported : plus ? f.normal : Vec3(-f.normal);
+    return cands[static_cast<std::size_t>(pick)];
+  }
+  const int pick = next_clockwise(normal, incoming, dirs, params_.tie_cos);
   if (pick < 0) return std::nullopt;
   return cands[static_cast<std::size_t>(pick)];
 }
 
-std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, bool check_start) {
+std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal) {
   ++walks_;
-  const NodeId a = graph_->from(start);
+  if (is_loop(graph_->segment(start.segment))) return Cycle{start};
   Cycle cycle{start};
-  std::set<NodeId> visited{a};
   std::set<int> used{start.segment};
   Vec3 normal = start_normal;
   Vec3 normal_sum = start_normal.normalized();
   HalfEdge cur = start;
   while (true) {
-    const NodeId b = graph_->to(cur);
-    if (b == a) {
-      if (check_start) {
-        Vec3 n = normal;
-        const auto next = turn(cur, n);
-        if (!next || !(*next == start)) return std::nullopt;
-      }
+    const auto next = turn(cur, normal);
+    if (!next) return std::nullopt;
+    if (*next == start) {
+      if (cycle.size() < 2) return std::nullopt;
       if (params_.reject_outer && winds_clockwise(cycle, normal_sum)) return std::nullopt;
       return cycle;
     }
-    if (!visited.insert(b).second) return std::nullopt;
-    if (static_cast<int>(cycle.size()) >= params_.max_segments) return std::nullopt;
-    const auto next = turn(cur, normal);
-    if (!next || !used.insert(next->segment).second) return std::nullopt;
+    if (!used.insert(next->segment).second) return std::nullopt;
+    if (params_.max_segments > 0 && static_cast<int>(cycle.size()) >= params_.max_segments) return std::nullopt;
     cycle.push_back(*next);
     normal_sum += normal.normalized();
     cur = *next;
@@ -155,68 +207,23 @@ bool CycleSearcher::winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) 
   return area.dot(normal_sum) < 0.0;
 }
 
-std::vector<std::pair<Vec3, bool>> CycleSearcher::start_normals(HalfEdge start) {
-  std::vector<std::pair<Vec3, bool>> out;
-  const NodeId a = graph_->from(start);
-  const NodeFrame& f = frame(a);
-  if (f.defined && !f.sharp) {
-    out.emplace_back(f.normal, true);
-    out.emplace_back(-f.normal, true);
-    return out;
-  }
-  // Sharp start (CHI'21 §5.1, Fig. 8): sort the segments around the best-fit
-  // normal; for the pairs (start, neighbour) the starting normal is their
-  // cross product, oriented so that the cycle turns from start to neighbour.
-  const std::vector<HalfEdge> all = graph_->outgoing(a);
-  const Vec3 d0 = graph_->direction(start);
-  std::vector<Vec3> others;
-  for (const HalfEdge& h : all)
-    if (!(h == start)) others.push_back(graph_->direction(h));
-  if (others.empty()) return out;
-  // At a corner whose tangents fill space the best-fit plane is ill defined
-  // (a cube corner: any plane fits equally); the mean tangent direction then
-  // gives a better axis to order the segments around.
-  Vec3 axis = f.defined ? f.normal : Vec3::Zero();
-  Vec3 mean = d0;
-  for (const Vec3& d : others) mean += d;
-  mean /= static_cast<double>(others.size() + 1);
-  if (mean.norm() > 0.3) axis = mean.normalized();
-  if (axis.norm() == 0.0) {
-    for (const Vec3& d : others)
-      if (d0.cross(d).norm() > 1e-6) {
-        axis = d0.cross(d).normalized();
-        break;
-      }
-  }
-  if (axis.norm() == 0.0) return out;
-  // Clockwise and counter-clockwise neighbours of `start` around the axis.
-  const int cw = next_clockwise(axis, d0, others);
-  const int ccw = next_clockwise(-axis, d0, others);
-  std::vector<int> pairs{cw, ccw};
-  // Degenerate order (both neighbours the same, or none): pair with all.
-  if (cw < 0 || ccw < 0 || cw == ccw) {
-    pairs.clear();
-    for (std::size_t i = 0; i < others.size(); ++i) pairs.push_back(static_cast<int>(i));
-  }
-  for (int idx : pairs) {
-    if (idx < 0) continue;
-    const Vec3 c = d0.cross(others[static_cast<std::size_t>(idx)]);
-    if (c.norm() < 1e-6) continue;
-    // The walk turns clockwise around its normal, i.e. the cycle runs
-    // counter-clockwise: leaving along d0 and closing through the neighbour
-    // means turning from d0 towards it counter-clockwise, so normal d0 × d.
-    out.emplace_back(c.normalized(), false);
-  }
-  return out;
-}
-
 std::vector<Cycle> CycleSearcher::search_segment(int segment) {
   std::vector<Cycle> out;
-  for (bool forward : {true, false}) {
-    const HalfEdge start{segment, forward};
-    for (const auto& [normal, check] : start_normals(start))
-      if (auto c = walk(start, normal, check)) out.push_back(std::move(*c));
+  const GraphSegment& g = graph_->segment(segment);
+  if (is_loop(g)) {
+    if (auto c = walk({segment, true}, Vec3::UnitZ())) out.push_back(std::move(*c));
+    return out;
   }
+  // From node0 unless it is sharp (or has no normal) and node1 is not.
+  const NodeFrame& f0 = frame(g.node0);
+  const NodeFrame f1 = frame(g.node1);
+  const bool smooth0 = f0.defined && !f0.sharp, smooth1 = f1.defined && !f1.sharp;
+  const bool from1 = (!smooth0 && smooth1) || (!f0.defined && f1.defined);
+  const HalfEdge start{segment, !from1};
+  const NodeFrame& f = from1 ? f1 : f0;
+  if (!f.defined) return out;
+  for (const Vec3& n : {Vec3(f.normal), Vec3(-f.normal)})
+    if (auto c = walk(start, n)) out.push_back(std::move(*c));
   return out;
 }
 

@@ -2,7 +2,9 @@
 // Local cycle search (CASSIE CHI'21 §5.1, thesis §3.3.2.1, after Stanko et
 // al. 2016): from a starting half-edge, walk the graph taking at each node
 // the next segment in clockwise order around the node normal, the normal's
-// orientation carried from node to node by parallel transport.
+// orientation carried from node to node by parallel transport. The rules are
+// the CASSIE app's (items 23-25 of the reference, CycleDetection.DetectCycle,
+// Graph.TryFindCycle): see README.md for each and where this differs.
 #include <map>
 #include <optional>
 #include <vector>
@@ -14,21 +16,52 @@ namespace sketchlab::soapfilm {
 
 struct CycleSearchParams {
   NodeFrameParams frame;
-  // Thesis §3.3.2.2 "Trim curves": when the transported normal and the node
-  // normal are this far apart (as lines, rad) the segment is taken for a trim
-  // curve and the turn is decided by the segments' main directions.
-  double trim_angle = 1.0471975511965976;  // π/3
-  // Walks longer than this many segments are abandoned (keeps the search
-  // local; CASSIE's walk is local by construction).
-  int max_segments = 12;
+  // Thesis §3.3.2.2 "Trim curves", item 24: when the transported normal and
+  // the node normal are more than this apart (as lines, rad) the turn is
+  // chosen in the plane of the transported normal. The app: π/3 (|cos| <
+  // 0.5); the default π/2 turns the rule off, which agrees better with
+  // CASSIE's own patches (README.md: measured).
+  double trim_angle = 1.5707963267948966;  // π/2
+  // Item 24: at a sharp node only segments whose unit tangent keeps at least
+  // this much length projected onto the transported normal's plane are
+  // candidates; in a trim turn, a tangent projecting shorter is replaced by
+  // the direction towards the segment's opposite node.
+  double sharp_projection = 0.7;
+  // Item 23: two segments leaving a node in directions closer than this
+  // (cosine) are ordered by the directions towards their opposite nodes.
+  double tie_cos = 0.99;
+  // Item 27: parallel-transport steps per cubic piece.
+  int transport_steps = 20;
+  // At a node with two segments the walk carries the transported normal
+  // across (rotated from the arriving to the leaving tangent) instead of
+  // taking the node's fitted normal. Not the app's rule; measured (README.md).
+  bool transport_through_two = true;
+  // Item 25: an existing patch breaks when a new segment leaves one of its
+  // nodes into it and reaches the cycle again through at most this many
+  // two-segment nodes.
+  int break_reach = 5;
+  // Item 24: a walk stops at a segment already bounding two patches; with
+  // this unset only automatic patches count (thesis §3.3.2.2 read literally).
+  bool manual_patches_count = true;
+  // Walks longer than this many segments are abandoned; 0: no limit (the
+  // app's walk, item 24). A documented variant (README.md).
+  int max_segments = 0;
   // The walk keeps the face on its left (it runs counter-clockwise around
   // the oriented normals). On an open sheet the same walk can also go round
-  // the sheet's outer border, clockwise; such cycles are rejected when the
-  // normals along the cycle agree on a direction (see README.md).
-  bool reject_outer = true;
+  // the sheet's outer border, clockwise; with this set, such cycles are
+  // rejected when the normals along the cycle agree on a direction. Not in
+  // the app; a documented variant (README.md).
+  bool reject_outer = false;
 };
 
 using Cycle = std::vector<HalfEdge>;
+
+// A direction leaving a node along a segment: the unit tangent there, and
+// the unit direction towards the segment's other node (zero for a loop).
+struct Leaving {
+  Vec3 tangent = Vec3::Zero();
+  Vec3 far = Vec3::Zero();
+};
 
 // Caches node frames for one graph.
 class CycleSearcher {
@@ -37,23 +70,24 @@ class CycleSearcher {
 
   const NodeFrame& frame(NodeId node);
 
-  // Walks from `start` with oriented normal `normal` at from(start). With
-  // `check_start`, the cycle is accepted only if the turn at the start node
-  // leads back into `start` (not done when the start node is sharp).
-  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, bool check_start);
+  // Walks from `start` with oriented normal `normal` at from(start) (item
+  // 24): at each node the next segment as in turn(); the walk fails at a node
+  // with fewer than 2 segments or on a segment already in the cycle, and
+  // closes when it turns back into `start` with at least 2 segments. A loop
+  // segment is a cycle by itself. Nodes may be revisited.
+  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal);
 
-  // Cycles on both sides of a segment, searched from both of its end nodes
-  // (Appendix B), in a fixed order; may contain the same cycle twice.
+  // The two walks of a segment (item 25), one with each orientation of the
+  // normal at its start node: node0, unless node0 is sharp (or has no
+  // normal) and node1 is not. May return the same cycle twice.
   std::vector<Cycle> search_segment(int segment);
 
   int walks() const { return walks_; }
 
  private:
-  // Start normals for leaving along `start`: ± the node normal, or at a sharp
-  // node the cross products with the neighbouring segments (CHI'21 §5.1).
-  std::vector<std::pair<Vec3, bool>> start_normals(HalfEdge start);
+  Leaving leaving(HalfEdge h) const;
   // Next half-edge at to(in) given the oriented normal carried along `in`.
-  // Updates `normal` to the oriented normal at the node.
+  // Updates `normal` to the oriented normal leaving the node.
   std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal);
   // Whether a closed walk runs clockwise around the mean of the normals it
   // used (`normal_sum`, one unit normal per node): the outer border.
@@ -69,6 +103,12 @@ class CycleSearcher {
 // after `incoming` (all directions leaving the same node), or -1. Directions
 // (nearly) parallel to the normal are skipped.
 int next_clockwise(const Vec3& normal, const Vec3& incoming, const std::vector<Vec3>& candidates);
+
+// The same with the app's tie rule (item 23): among candidates leaving
+// within `tie_cos` of the first one found, the one whose opposite node comes
+// first clockwise is taken.
+int next_clockwise(const Vec3& normal, const Leaving& incoming, const std::vector<Leaving>& candidates,
+                   double tie_cos);
 
 // Canonical key of a cycle: its graph segments sorted (orientation and
 // starting point ignored), for duplicate rejection.

@@ -1,5 +1,6 @@
 // CGAL is confined to this translation unit (slow to compile).
 #include "patch_mesh.hpp"
+#include "timed_soapfilm.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
@@ -11,7 +12,6 @@
 
 #include <array>
 #include <algorithm>
-#include <ctime>
 #include <memory>
 #include <cmath>
 #include <stdexcept>
@@ -77,15 +77,6 @@ class PatternCachingLu {
   // Shared: smooth_shape copies the solver object it is given.
   std::shared_ptr<State> state_ = std::make_shared<State>();
 };
-
-// CPU time of the calling thread (ms): stage timings that do not depend on
-// the load of a shared machine.
-double thread_cpu_ms() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
-}
-
 
 Mesh to_kernel_mesh(const SurfaceMesh& sm, const std::vector<VertexIndex>& border) {
   Mesh mesh;

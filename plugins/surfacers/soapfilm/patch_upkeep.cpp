@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <set>
 
 namespace sketchlab::soapfilm {
@@ -48,39 +49,8 @@ std::set<PatchId> patches_on_any(const Network& net, const std::set<CurveId>& cu
   return out;
 }
 
-// Searches the seeds in order and filters the closed walks: duplicates of
-// `existing` keys or of earlier finds, and cycles over a segment that already
-// bounds two automatic patches (counts in `automatic_count`), are rejected.
-std::vector<Cycle> search_and_filter(CycleSearcher& searcher, const std::vector<int>& seeds,
-                                     std::set<std::vector<int>>& existing,
-                                     std::map<int, int>& automatic_count, UpkeepResult& stats) {
-  std::vector<Cycle> accepted;
-  for (int seed : seeds) {
-    for (Cycle& c : searcher.search_segment(seed)) {
-      ++stats.cycles_found;
-      std::vector<int> key = cycle_key(c);
-      if (existing.count(key)) {
-        ++stats.rejected_duplicate;
-        continue;
-      }
-      bool full = false;
-      for (int s : key) full = full || automatic_count[s] >= 2;
-      if (full) {
-        ++stats.rejected_manifold;
-        continue;
-      }
-      for (int s : key) ++automatic_count[s];
-      existing.insert(std::move(key));
-      accepted.push_back(std::move(c));
-    }
-  }
-  stats.seeds += static_cast<int>(seeds.size());
-  stats.walks = searcher.walks();
-  return accepted;
-}
-
-// Seeds in (curve, t0) order without repeats.
-std::vector<int> ordered_seeds(const CurveGraph& graph, const std::set<int>& seeds) {
+// Seeds in (curve, t0) order.
+std::vector<int> ordered(const CurveGraph& graph, const std::set<int>& seeds) {
   std::vector<int> out(seeds.begin(), seeds.end());
   std::sort(out.begin(), out.end(), [&](int a, int b) {
     const GraphSegment &sa = graph.segment(a), &sb = graph.segment(b);
@@ -90,7 +60,105 @@ std::vector<int> ordered_seeds(const CurveGraph& graph, const std::set<int>& see
   return out;
 }
 
+// Which found cycles become patches (Appendix B, item 24): not a duplicate of
+// an existing cycle (same segments), and no segment already bounding two.
+class CycleFilter {
+ public:
+  void add(std::vector<int> key, bool counts) {
+    if (counts)
+      for (int s : key) ++bounding_[s];
+    existing_.insert(std::move(key));
+  }
+  bool duplicate(const std::vector<int>& key) const { return existing_.count(key) > 0; }
+  bool full(const std::vector<int>& key) const {
+    return std::any_of(key.begin(), key.end(), [&](int s) {
+      const auto it = bounding_.find(s);
+      return it != bounding_.end() && it->second >= 2;
+    });
+  }
+
+ private:
+  std::set<std::vector<int>> existing_;
+  std::map<int, int> bounding_;  // segment -> patches it bounds
+};
+
+// Whether every boundary piece is still exactly one graph segment (CASSIE
+// keeps a patch whose cycle is found again with the same segment ids).
+bool unchanged(CurveGraph& graph, const std::vector<OrientedSegment>& boundary) {
+  for (const OrientedSegment& piece : boundary) {
+    const std::vector<int> cover = graph.covered_by(piece);
+    if (cover.size() != 1) return false;
+    const GraphSegment& g = graph.segment(cover.front());
+    const bool same = (g.t0 == piece.t_from && g.t1 == piece.t_to) || (g.t0 == piece.t_to && g.t1 == piece.t_from);
+    if (!same) return false;
+  }
+  return true;
+}
+
+// Item 25: from `h` (leaving the cycle), the cycle is reached again through
+// at most `reach` two-segment nodes.
+bool reaches(CurveGraph& graph, HalfEdge h, const std::set<NodeId>& cycle_nodes, int reach) {
+  for (int passed = 0;; ++passed) {
+    const NodeId y = graph.to(h);
+    if (cycle_nodes.count(y)) return true;
+    const std::vector<HalfEdge> outs = graph.outgoing(y);
+    if (outs.size() != 2 || passed >= reach) return false;
+    h = outs[0] == h.reversed() ? outs[1] : outs[0];
+  }
+}
+
+// Item 25: whether a new segment crosses the patch.
+bool broken_by(CurveGraph& graph, const Patch& patch, const std::vector<int>& key, const std::set<int>& fresh,
+               int reach) {
+  std::set<NodeId> cycle_nodes;
+  for (int s : key) {
+    cycle_nodes.insert(graph.segment(s).node0);
+    cycle_nodes.insert(graph.segment(s).node1);
+  }
+  for (NodeId x : cycle_nodes)
+    for (const HalfEdge& h : graph.outgoing(x)) {
+      if (!fresh.count(h.segment) || std::binary_search(key.begin(), key.end(), h.segment)) continue;
+      const Node* node = graph.network().find_node(x);
+      if (enters_patch(patch.mesh, node->position, graph.direction(h)) && reaches(graph, h, cycle_nodes, reach))
+        return true;
+    }
+  return false;
+}
+
 }  // namespace
+
+bool enters_patch(const Mesh& mesh, const Vec3& at, const Vec3& d) {
+  if (mesh.faces.empty() || mesh.vertices.empty()) return true;
+  int v = 0;
+  double best = INFINITY;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    if (const double dist = (mesh.vertices[i] - at).squaredNorm(); dist < best) best = dist, v = static_cast<int>(i);
+  // The corners of the triangles at v, seen along their mean normal (one
+  // plane for the whole fan: the fan's triangles fold, and d projected on
+  // each one's own plane could fall between two of them).
+  const Vec3& o = mesh.vertices[static_cast<std::size_t>(v)];
+  std::vector<std::pair<Vec3, Vec3>> corners;
+  Vec3 normal = Vec3::Zero();
+  for (const auto& f : mesh.faces)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (f[k] == v) {
+        const Vec3 e1 = mesh.vertices[static_cast<std::size_t>(f[(k + 1) % 3])] - o;
+        const Vec3 e2 = mesh.vertices[static_cast<std::size_t>(f[(k + 2) % 3])] - o;
+        if (const Vec3 n = e1.cross(e2); n.norm() > 1e-15) {
+          normal += n.normalized();
+          corners.emplace_back(e1, e2);
+        }
+      }
+  if (!(normal.norm() > 1e-9)) return false;
+  const Vec3 n = normal.normalized();
+  const Vec3 p = d - d.dot(n) * n;
+  if (p.norm() < 1e-6 * d.norm()) return false;
+  for (const auto& [e1, e2] : corners) {
+    const Vec3 a = e1 - e1.dot(n) * n, b = e2 - e2.dot(n) * n;
+    if (a.cross(p).dot(n) >= 0.0 && p.cross(b).dot(n) >= 0.0) return true;
+  }
+  return false;
+}
 
 std::vector<int> boundary_key(CurveGraph& graph, const std::vector<OrientedSegment>& boundary) {
   std::vector<int> key;
@@ -99,7 +167,9 @@ std::vector<int> boundary_key(CurveGraph& graph, const std::vector<OrientedSegme
     if (cover.empty()) return {};
     key.insert(key.end(), cover.begin(), cover.end());
   }
+  // Pieces stored under a finer node set share the segment holding them.
   std::sort(key.begin(), key.end());
+  key.erase(std::unique(key.begin(), key.end()), key.end());
   return key;
 }
 
@@ -115,120 +185,113 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
   std::set<CurveId> new_curves = replaced;
   for (const NetworkCurve& c : last.curves_added)
     if (net.find_curve(c.id)) new_curves.insert(c.id);
-  std::set<NodeId> new_nodes;
-  for (const auto* list : {&last.nodes_added, &last.nodes_replaced})
-    for (const Node& n : *list)
-      if (net.find_node(n.id)) new_nodes.insert(n.id);
 
-  // New segments.
+  // New segments: the new curves' (Appendix B), and those at an added node
+  // joining existing curves only.
   std::set<int> fresh;
   for (CurveId c : new_curves)
     for (int s : graph.segments_of(c)) fresh.insert(s);
-  std::set<CurveId> split_curves;  // curves that received a new node
-  for (NodeId n : new_nodes) {
-    for (const HalfEdge& h : graph.outgoing(n)) fresh.insert(h.segment);
-    for (const NodeIncidence& inc : net.find_node(n)->incidences) split_curves.insert(inc.curve);
+  for (const Node& n : last.nodes_added) {
+    const Node* node = net.find_node(n.id);
+    if (!node || std::any_of(node->incidences.begin(), node->incidences.end(),
+                             [&](const NodeIncidence& i) { return new_curves.count(i.curve); }))
+      continue;
+    for (const HalfEdge& h : graph.outgoing(n.id)) fresh.insert(h.segment);
   }
-  std::set<int> seeds = fresh;
+
+  // Patches possibly broken: through a node of a new segment, or on a
+  // replaced curve.
+  std::set<CurveId> around = replaced;
+  for (int s : fresh)
+    for (NodeId x : {graph.segment(s).node0, graph.segment(s).node1})
+      if (const Node* node = net.find_node(x))
+        for (const NodeIncidence& inc : node->incidences) around.insert(inc.curve);
+  std::vector<int> first_seeds;  // one segment of each broken patch, searched first (item 25)
+  std::map<PatchId, std::vector<int>> broken;  // -> key, when it still matches the graph
+  for (PatchId id : patches_on_any(net, around)) {
+    const Patch& patch = net.patches().at(id);
+    const bool on_replaced = std::any_of(patch.boundary.begin(), patch.boundary.end(),
+                                         [&](const OrientedSegment& p) { return replaced.count(p.curve); });
+    const std::vector<int> key = boundary_key(graph, patch.boundary);
+    if (!on_replaced && !key.empty() && !broken_by(graph, patch, key, fresh, params.break_reach)) continue;
+    broken[id] = on_replaced || !unchanged(graph, patch.boundary) ? std::vector<int>{} : key;
+    for (const OrientedSegment& piece : patch.boundary) {
+      if (!net.find_curve(piece.curve)) continue;
+      if (const std::vector<int> cover = graph.covered_by(piece); !cover.empty()) {
+        first_seeds.push_back(cover.front());
+        break;
+      }
+    }
+  }
+  result.patches_broken = static_cast<int>(broken.size());
 
   // Deletions: search again around the nodes the deleted curves touched.
+  std::set<int> around_deleted;
   std::set<CurveId> removed(last.curves_removed.begin(), last.curves_removed.end());
   if (!removed.empty())
     for (NodeId n : nodes_touched_by(sketch, last, removed)) {
       const Node* node = net.find_node(n);
       if (!node) continue;
-      for (const HalfEdge& h : graph.outgoing(n)) seeds.insert(h.segment);
+      for (const HalfEdge& h : graph.outgoing(n)) around_deleted.insert(h.segment);
       for (const NodeIncidence& inc : node->incidences)
-        if (int s = graph.segment_at(inc.curve, inc.t); s >= 0) seeds.insert(s);
+        if (int s = graph.segment_at(inc.curve, inc.t); s >= 0) around_deleted.insert(s);
     }
 
-  // Cycles possibly crossed, and patches on replaced curves (stale geometry).
-  std::set<PatchId> removed_patches;
-  std::set<CurveId> touched = replaced;
-  touched.insert(split_curves.begin(), split_curves.end());
-  for (PatchId id : patches_on_any(net, touched)) {
-    const Patch& patch = net.patches().at(id);
-    bool on_replaced = false, on_split = false;
-    for (const OrientedSegment& piece : patch.boundary) {
-      on_replaced = on_replaced || replaced.count(piece.curve);
-      on_split = on_split || split_curves.count(piece.curve);
-    }
-    if (!on_replaced && !on_split) continue;
-    const std::vector<int> key = boundary_key(graph, patch.boundary);
-    bool crossed = on_replaced || key.empty();
-    if (!crossed) {
-      std::set<NodeId> on_boundary;
-      for (int s : key) {
-        on_boundary.insert(graph.segment(s).node0);
-        on_boundary.insert(graph.segment(s).node1);
-      }
-      for (int s : fresh) {
-        if (std::binary_search(key.begin(), key.end(), s)) continue;
-        const GraphSegment& g = graph.segment(s);
-        if (on_boundary.count(g.node0) && on_boundary.count(g.node1)) {
-          crossed = true;
-          break;
-        }
-      }
-    }
-    if (!crossed) continue;
-    removed_patches.insert(id);
-    // Search again from one of its segments (Appendix B).
-    for (const OrientedSegment& piece : patch.boundary) {
-      if (!net.find_curve(piece.curve)) continue;
-      const std::vector<int> cover = graph.covered_by(piece);
-      if (!cover.empty()) {
-        seeds.insert(cover.front());
-        break;
-      }
-    }
-  }
+  std::vector<int> seeds;
+  std::set<int> seen;
+  auto push = [&](int s) {
+    if (seen.insert(s).second) seeds.push_back(s);
+  };
+  for (int s : first_seeds) push(s);
+  for (int s : ordered(graph, fresh)) push(s);
+  for (int s : ordered(graph, around_deleted)) push(s);
 
   // Walk first, then read only the patches on the curves the walks reached.
   const auto walk_start = std::chrono::steady_clock::now();
-  const std::vector<int> order = ordered_seeds(graph, seeds);
-  std::vector<std::pair<int, std::vector<Cycle>>> walked;
+  std::vector<std::vector<Cycle>> walked;
   std::set<CurveId> reached;
-  for (int seed : order) {
+  for (int seed : seeds) {
     std::vector<Cycle> found = searcher.search_segment(seed);
     for (const Cycle& c : found)
       for (const HalfEdge& h : c) reached.insert(graph.segment(h.segment).curve);
-    walked.emplace_back(seed, std::move(found));
+    walked.push_back(std::move(found));
   }
   result.walk_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - walk_start).count();
-  std::set<std::vector<int>> existing;
-  std::map<int, int> automatic_count;
+  CycleFilter filter;
   for (PatchId id : patches_on_any(net, reached)) {
-    if (removed_patches.count(id)) continue;
+    if (broken.count(id)) continue;
     const Patch& patch = net.patches().at(id);
-    std::vector<int> key = boundary_key(graph, patch.boundary);
-    if (patch.automatic)
-      for (int s : key) ++automatic_count[s];
-    existing.insert(std::move(key));
+    filter.add(boundary_key(graph, patch.boundary), patch.automatic || params.manual_patches_count);
   }
-  for (auto& [seed, found] : walked) {
+  std::map<std::vector<int>, PatchId> kept_if_found;
+  for (const auto& [id, key] : broken)
+    if (!key.empty()) kept_if_found[key] = id;
+  for (std::vector<Cycle>& found : walked) {
     ++result.seeds;
     for (Cycle& c : found) {
       ++result.cycles_found;
       std::vector<int> key = cycle_key(c);
-      if (existing.count(key)) {
+      if (filter.duplicate(key)) {
         ++result.rejected_duplicate;
         continue;
       }
-      bool full = false;
-      for (int s : key) full = full || automatic_count[s] >= 2;
-      if (full) {
+      if (auto it = kept_if_found.find(key); it != kept_if_found.end()) {
+        // Found again over the same segments: the broken patch stays.
+        broken.erase(it->second);
+        filter.add(std::move(key), true);
+        continue;
+      }
+      if (filter.full(key)) {
         ++result.rejected_manifold;
         continue;
       }
-      for (int s : key) ++automatic_count[s];
-      existing.insert(std::move(key));
+      filter.add(std::move(key), true);
       result.cycles_added.push_back(to_boundary(graph, c));
     }
   }
   result.walks = searcher.walks();
-  result.patches_removed.assign(removed_patches.begin(), removed_patches.end());
+  for (const auto& [id, key] : broken) result.patches_removed.push_back(id);
   return result;
 }
 
@@ -240,13 +303,25 @@ std::vector<std::vector<OrientedSegment>> detect_all_cycles(const Network& netwo
   std::set<int> all;
   for (const auto& [id, curve] : network.curves())
     for (int s : graph.segments_of(id)) all.insert(s);
-  std::set<std::vector<int>> existing;
-  std::map<int, int> counts;
   UpkeepResult local;
-  const std::vector<Cycle> cycles =
-      search_and_filter(searcher, ordered_seeds(graph, all), existing, counts, local);
+  CycleFilter filter;
   std::vector<std::vector<OrientedSegment>> out;
-  for (const Cycle& c : cycles) out.push_back(to_boundary(graph, c));
+  for (int seed : ordered(graph, all)) {
+    ++local.seeds;
+    for (const Cycle& c : searcher.search_segment(seed)) {
+      ++local.cycles_found;
+      std::vector<int> key = cycle_key(c);
+      if (filter.duplicate(key)) {
+        ++local.rejected_duplicate;
+      } else if (filter.full(key)) {
+        ++local.rejected_manifold;
+      } else {
+        filter.add(std::move(key), true);
+        out.push_back(to_boundary(graph, c));
+      }
+    }
+  }
+  local.walks = searcher.walks();
   if (stats) *stats = local;
   return out;
 }

@@ -1,18 +1,23 @@
 #pragma once
-// Patch upkeep after an edit (CASSIE thesis Appendix B), computed from the
-// sketch and the edit alone (no state kept between edits):
-//  - new segments: the graph segments of added or replaced curves and those
-//    ending at added or replaced nodes (segments split by a new node);
-//  - cycles possibly crossed: existing patches with a boundary piece on a
-//    curve that received a new node inside that piece. A patch is crossed when
-//    a new segment joins two nodes of its boundary without being part of it;
-//    it is removed and one of its segments searched again;
+// Patch upkeep after an edit (CASSIE thesis Appendix B, and the CASSIE app's
+// Graph.TryFindAllCycles, items 25 and 27), computed from the sketch and the
+// edit alone (no state kept between edits):
+//  - new segments: the graph segments of added or replaced curves (and those
+//    at an added node that is on no new curve);
+//  - patches possibly broken: those on a replaced curve (stale geometry), and
+//    those whose cycle passes through a node of a new segment. A patch breaks
+//    when a new segment leaves such a node into the patch (between the two
+//    cycle segments there, on the patch's side: read from its mesh) and
+//    reaches the cycle again through at most `break_reach` two-segment nodes.
+//    It is removed and one of its segments searched again, first;
 //  - deletions: the kernel removes patches bounded by a deleted curve; the
 //    segments at the nodes the deleted curve touched (read from the edits in
 //    the sketch's history) are searched again;
-//  - local cycle searches from both ends of each new segment; duplicates of
-//    existing or already found cycles are rejected, and so are cycles using a
-//    segment that already bounds two automatic patches (thesis §3.3.2.2).
+//  - two walks per seed (CycleSearcher::search_segment); a cycle over the
+//    segments of an existing patch is a duplicate, and a broken patch whose
+//    cycle is found again unchanged keeps its identity; a cycle over a
+//    segment that already bounds two patches is refused (item 24; thesis
+//    §3.3.2.2).
 // The cost is local: the graph (CurveGraph) is built lazily for the curves the
 // seeds and walks reach, and the patches on a curve come from the kernel's
 // Network::patches_on, so neither the curve list nor the patch list is
@@ -34,6 +39,7 @@ struct UpkeepResult {
   int walks = 0;           // walks started
   int cycles_found = 0;    // walks that closed (before duplicate rejection)
   int rejected_duplicate = 0, rejected_manifold = 0;
+  int patches_broken = 0;  // existing patches crossed by a new segment
   double walk_ms = 0.0;  // wall time of the walks (not deterministic; statistics only)
 };
 
@@ -49,5 +55,11 @@ std::vector<std::vector<OrientedSegment>> detect_all_cycles(const Network& netwo
 // The graph segments (sorted, as indices into `graph`) a patch boundary
 // covers; empty when a piece no longer matches the graph.
 std::vector<int> boundary_key(CurveGraph& graph, const std::vector<OrientedSegment>& boundary);
+
+// Whether direction `d` leaving the boundary point `at` of a patch points
+// into it: inside the corner, at the mesh vertex nearest `at`, of one of the
+// triangles there (their union is the patch's side at that point). True for
+// a patch without a mesh.
+bool enters_patch(const Mesh& mesh, const Vec3& at, const Vec3& d);
 
 }  // namespace sketchlab::soapfilm

@@ -1,52 +1,225 @@
-// soapfilm_compare DATA_DIR [SESSION...]: runs the soapfilm cycle detection
-// on CASSIE's own final curve networks (DATA_DIR/sketch_graph) and compares
-// the cycles with CASSIE's automatic patches (DATA_DIR/raw_data) by their
-// bounding strokes. Prints "name value unit" lines.
-#include <cstdlib>
+// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
+//                  [--events CSV]
+//
+// Compares this plugin with CASSIE on the bundled sessions (default: every
+// session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
+//  - final network: the cycles found on CASSIE's own final curve network
+//    (DATA_DIR/sketch_graph) vs CASSIE's automatic patches still there;
+//  - replay: CASSIE's curves replayed in creation order (deletions included)
+//    through the surfacer, its patch creations matched with CASSIE's at the
+//    same event, and its patches at the end (cassie_replay.hpp).
+// Prints a markdown table per session and in total (Patch-system sessions,
+// the only ones where CASSIE made patches), then "name value unit" lines.
+// --param sets a plugin parameter (as in `sketchlab plugins soapfilm`);
+// --no-user-edits replays CASSIE's curves only (not its users' manual patch
+// additions and deletions); --meets sets the distance at which a replayed
+// Bézier joint meets an alive curve (CassieGraphParams::on_curve).
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "cassie_graph.hpp"
+#include "cassie_replay.hpp"
+#include "sketchlab/run/distribution.hpp"
+
+using namespace sketchlab;
+using namespace sketchlab::soapfilm;
+
+namespace {
+
+std::string pct(int num, int den) {
+  if (den == 0) return "–";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f %%", 100.0 * num / den);
+  return buf;
+}
+
+std::string ratio(int num, int den) { return pct(num, den) + " (" + std::to_string(num) + "/" + std::to_string(den) + ")"; }
+
+const char* system_name(int s) { return s == 0 ? "freehand" : s == 1 ? "armature" : s == 2 ? "patch" : "?"; }
+
+struct Row {
+  std::string session;
+  int system = 0;
+  bool has_graph = false;
+  std::string final_error, replay_error;
+  FidelityReport final;
+  ReplayFigures replay;
+  int events = 0;
+};
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  using namespace sketchlab::soapfilm;
-  if (argc < 2) {
-    std::cerr << "usage: soapfilm_compare DATA_DIR [SESSION...] [--max-segments N] [--trim-angle RAD] [--sharp-error E] [--keep-outer]\n";
-    return 2;
-  }
-  const std::filesystem::path dir = argv[1];
+  std::filesystem::path dir = "data/cassie";
   std::vector<std::string> sessions;
-  CycleSearchParams params;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--max-segments" && i + 1 < argc)
-      params.max_segments = std::atoi(argv[++i]);
-    else if (a == "--trim-angle" && i + 1 < argc)
-      params.trim_angle = std::atof(argv[++i]);
-    else if (a == "--keep-outer")
-      params.reject_outer = false;
-    else if (a == "--sharp-error" && i + 1 < argc)
-      params.frame.sharp_error = std::atof(argv[++i]);
-    else
-      sessions.push_back(a);
-  }
-  if (sessions.empty()) sessions = {"hat", "chair", "01-2-1", "02-1-2"};
+  std::map<std::string, ParamValue> given;
+  ReplayOptions options;
+  std::string events_csv;
+  const std::vector<ParamSpec> specs = soapfilm_param_specs();
+  bool dir_given = false;
   try {
-    for (const std::string& s : sessions) {
-      const FidelityReport r = compare_with_cassie(dir / "sketch_graph" / (s + ".json"),
-                                                   dir / "raw_data" / (s + ".json"), params);
-      std::cout << s << ".cassie_automatic " << r.cassie_automatic << " patches\n"
-                << s << ".cassie_manual " << r.cassie_manual << " patches\n"
-                << s << ".ours " << r.ours << " cycles\n"
-                << s << ".found " << r.found << " patches\n"
-                << s << ".missed " << r.missed << " patches\n"
-                << s << ".extra " << r.extra << " cycles\n"
-                << s << ".extra_matching_manual " << r.extra_matching_manual << " cycles\n";
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a == "--param" && i + 1 < argc) {
+        parse_param_assignment(argv[++i], given);
+      } else if (a == "--meets" && i + 1 < argc) {
+        // Replay: a joint this close (m) to an alive curve meets it.
+        options.graph.on_curve = std::stod(argv[++i]);
+        if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
+      } else if (a == "--no-user-edits") {
+        options.user_patch_edits = false;
+      } else if (a == "--events" && i + 1 < argc) {
+        events_csv = argv[++i];
+      } else if (a.rfind("--", 0) == 0) {
+        std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
+                     "[--meets M] [--events CSV]\n";
+        return 2;
+      } else if (!dir_given && std::filesystem::is_directory(a)) {
+        dir = a;
+        dir_given = true;
+      } else {
+        sessions.push_back(a);
+      }
     }
   } catch (const std::exception& e) {
     std::cerr << "soapfilm_compare: " << e.what() << "\n";
-    return 1;
+    return 2;
   }
-  return 0;
+  const SoapfilmParams params = soapfilm_params(validate_params(specs, given));
+  if (sessions.empty()) {
+    std::error_code ec;
+    for (const auto& f : std::filesystem::directory_iterator(dir / "sketch_history", ec))
+      if (f.path().extension() == ".json") sessions.push_back(f.path().stem().string());
+    std::sort(sessions.begin(), sessions.end());
+    if (sessions.empty()) {
+      std::cerr << "soapfilm_compare: no session in " << (dir / "sketch_history").string() << "\n";
+      return 2;
+    }
+  }
+
+  std::ofstream csv;
+  if (!events_csv.empty()) {
+    csv.open(events_csv);
+    csv << "session,event,kind,element,time,group,added,removed,surfacer_wall_ms,surfacer_cpu_ms,patches_meshed\n";
+  }
+  std::vector<Row> rows;
+  std::vector<double> event_cpu, event_wall, mesh_cpu, stage[3];
+  int failures = 0;
+  for (const std::string& name : sessions) {
+    Row row;
+    row.session = name;
+    try {
+      const CassieSession session = load_cassie_session(dir, name);
+      row.system = session.system;
+      const auto graph = dir / "sketch_graph" / (name + ".json");
+      row.has_graph = std::filesystem::exists(graph);
+      if (row.has_graph) {
+        try {
+          row.final = compare_with_cassie(graph, session, params.search);
+        } catch (const std::exception& e) {
+          row.final_error = e.what();
+        }
+      }
+      const ReplayResult r = replay_cassie_session(session, params, options);
+      row.replay = r.figures;
+      row.events = static_cast<int>(r.events.size());
+      for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
+      for (std::size_t i = 0; i < r.events.size(); ++i) {
+        const ReplayEvent& e = r.events[i];
+        if (e.kind == "stroke" || e.kind == "delete") {
+          event_cpu.push_back(e.surfacer_cpu_ms);
+          event_wall.push_back(e.surfacer_wall_ms);
+        }
+        for (const PatchMeshTimings& t : e.meshed) {
+          mesh_cpu.push_back(t.fill_ms + t.remesh_ms + t.smooth_ms + t.output_ms);
+          stage[0].push_back(t.fill_ms);
+          stage[1].push_back(t.remesh_ms);
+          stage[2].push_back(t.smooth_ms);
+        }
+        if (csv)
+          csv << name << ',' << i << ',' << e.kind << ',' << e.element << ',' << e.time << ',' << e.group << ','
+              << e.added.size() << ',' << e.removed.size() << ',' << e.surfacer_wall_ms << ',' << e.surfacer_cpu_ms
+              << ',' << e.patches_meshed << '\n';
+      }
+    } catch (const std::exception& e) {
+      row.replay_error = e.what();
+    }
+    for (const std::string& w : row.final.warnings) std::cerr << "warning: " << w << "\n";
+    if (!row.final_error.empty()) std::cerr << "soapfilm_compare: " << row.final_error << "\n";
+    if (!row.replay_error.empty()) std::cerr << "soapfilm_compare: " << row.replay_error << "\n";
+    failures += !row.final_error.empty() + !row.replay_error.empty();
+    rows.push_back(std::move(row));
+  }
+
+  std::cout << "| session | system | final: recall | final: precision | final: extra that CASSIE's user added "
+               "| replay: created recall | replay: created precision | replay: end recall | replay: end precision |\n"
+            << "|---|---|---|---|---|---|---|---|---|\n";
+  FidelityReport total_final;
+  ReplayFigures total_replay;
+  for (const Row& r : rows) {
+    std::cout << "| " << r.session << " | " << system_name(r.system) << " | ";
+    if (!r.final_error.empty())
+      std::cout << "error | error | – | ";
+    else if (!r.has_graph)
+      std::cout << "no graph | – | – | ";
+    else if (r.system != 2)
+      std::cout << "– | – (" << r.final.ours << " cycles) | – | ";
+    else
+      std::cout << ratio(r.final.found, r.final.cassie_automatic) << " | " << ratio(r.final.found, r.final.ours) << " | "
+                << r.final.extra_matching_manual << "/" << r.final.extra << " | ";
+    if (!r.replay_error.empty())
+      std::cout << "error | error | error | error |\n";
+    else if (r.system != 2)
+      std::cout << "– | – (" << r.replay.ours_created << " created) | – | – (" << r.replay.ours_final << " at the end) |\n";
+    else
+      std::cout << ratio(r.replay.matched_created, r.replay.cassie_created) << " | "
+                << ratio(r.replay.matched_created, r.replay.ours_created) << " | "
+                << ratio(r.replay.matched_final, r.replay.cassie_final) << " | "
+                << ratio(r.replay.matched_final, r.replay.ours_final) << " |\n";
+    if (r.system == 2 && r.final_error.empty() && r.has_graph) total_final += r.final;
+    if (r.system == 2 && r.replay_error.empty()) total_replay += r.replay;
+  }
+  std::cout << "| **total (patch system)** | | " << ratio(total_final.found, total_final.cassie_automatic) << " | "
+            << ratio(total_final.found, total_final.ours) << " | " << total_final.extra_matching_manual << "/"
+            << total_final.extra << " | " << ratio(total_replay.matched_created, total_replay.cassie_created) << " | "
+            << ratio(total_replay.matched_created, total_replay.ours_created) << " | "
+            << ratio(total_replay.matched_final, total_replay.cassie_final) << " | "
+            << ratio(total_replay.matched_final, total_replay.ours_final) << " |\n\n";
+
+  auto line = [](const std::string& n, double v, const char* unit) { std::cout << n << ' ' << v << ' ' << unit << '\n'; };
+  line("final.cassie_automatic", total_final.cassie_automatic, "patches");
+  line("final.found", total_final.found, "patches");
+  line("final.ours", total_final.ours, "cycles");
+  line("final.recall", total_final.cassie_automatic ? double(total_final.found) / total_final.cassie_automatic : 0, "1");
+  line("final.precision", total_final.ours ? double(total_final.found) / total_final.ours : 0, "1");
+  line("replay.cassie_created", total_replay.cassie_created, "patches");
+  line("replay.ours_created", total_replay.ours_created, "patches");
+  line("replay.matched_created", total_replay.matched_created, "patches");
+  line("replay.matched_elsewhere", total_replay.matched_elsewhere, "patches");
+  line("replay.ours_removed", total_replay.ours_removed, "patches");
+  line("replay.recall_created", total_replay.recall_created(), "1");
+  line("replay.precision_created", total_replay.precision_created(), "1");
+  line("replay.recall_final", total_replay.recall_final(), "1");
+  line("replay.precision_final", total_replay.precision_final(), "1");
+  const Distribution cpu = distribution(event_cpu), wall = distribution(event_wall), mesh = distribution(mesh_cpu);
+  line("replay.event_cpu_p50", cpu.median, "ms");
+  line("replay.event_cpu_p95", cpu.p95, "ms");
+  line("replay.event_cpu_max", cpu.max, "ms");
+  line("replay.event_wall_p95", wall.p95, "ms");
+  line("replay.mesh_per_patch_cpu_p50", mesh.median, "ms");
+  line("replay.mesh_per_patch_cpu_p95", mesh.p95, "ms");
+  line("replay.mesh_per_patch_cpu_max", mesh.max, "ms");
+  const char* stage_name[] = {"fill", "remesh", "smooth"};
+  for (int i = 0; i < 3; ++i) {
+    const Distribution d = distribution(stage[i]);
+    line(std::string("replay.mesh_") + stage_name[i] + "_cpu_p50", d.median, "ms");
+    line(std::string("replay.mesh_") + stage_name[i] + "_cpu_p95", d.p95, "ms");
+  }
+  line("failures", failures, "sessions");
+  return failures ? 1 : 0;
 }

@@ -1,5 +1,7 @@
 #pragma once
 // The plugin's parameters (defaults from CASSIE; see README.md).
+#include <map>
+#include <string>
 #include <vector>
 
 #include "cycle_search.hpp"
@@ -13,13 +15,19 @@ struct SoapfilmParams {
   CycleSearchParams search;
   ManualPatchParams manual;
   PatchMeshParams mesh;
-  double edge_length = 0.01;    // m, boundary sampling = target edge length
-  // Boundary samples per patch at most: bounds one patch's mesh to ~250
-  // vertices (~6 ms), the cost the 10 ms per patch target allows (README.md).
-  int max_boundary_points = 48;
+  // m, boundary sampling = target edge length (CASSIE app, item 27: 0.02 m).
+  double edge_length = 0.02;
+  // Boundary samples per patch at most: bounds one patch's mesh to ~150
+  // vertices, the per-patch meshing CPU p95 <= 5 ms target on the bundled
+  // sessions (README.md); cycles longer than 40 x 2 cm get a coarser spacing.
+  int max_boundary_points = 40;
 };
 
 std::vector<ParamSpec> soapfilm_param_specs();
 SoapfilmParams soapfilm_params(const Params& params);
+// Reads one "NAME=VALUE" command-line assignment of a soapfilm parameter (the
+// tools' --param) into `given`. Throws std::invalid_argument naming the
+// argument when NAME is not a parameter, and ParamError for a bad value.
+void parse_param_assignment(const std::string& assignment, std::map<std::string, ParamValue>& given);
 
 }  // namespace sketchlab::soapfilm

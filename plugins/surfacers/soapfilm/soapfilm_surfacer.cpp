@@ -30,7 +30,8 @@ std::optional<Patch> make_patch(const Network& network, PatchId id,
   }
 }
 
-SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const SoapfilmParams& params) {
+SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const SoapfilmParams& params,
+                              std::vector<PatchMeshTimings>* per_patch) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   SurfaceUpdate out;
@@ -46,6 +47,7 @@ SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const Soap
     stages.fill_ms += t.fill_ms;
     stages.remesh_ms += t.remesh_ms;
     stages.smooth_ms += t.smooth_ms;
+    if (per_patch) per_patch->push_back(t);
     if (patch) {
       out.edit.patches_added.push_back(std::move(*patch));
       ++next;

@@ -7,7 +7,10 @@
 namespace sketchlab::soapfilm {
 
 // Patch edit after `last` was applied (Appendix B upkeep + meshing).
-SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const SoapfilmParams& params);
+// `per_patch`, when given, receives the meshing stages' CPU times of each
+// cycle meshed (appended, in discovery order).
+SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const SoapfilmParams& params,
+                              std::vector<PatchMeshTimings>* per_patch = nullptr);
 // Add a patch at a point (manual) or delete the patch nearest a point.
 SurfaceUpdate soapfilm_command(const Sketch& sketch, const SurfaceCommand& command,
                                const SoapfilmParams& params);

@@ -32,31 +32,62 @@ bool closed_chain(const Patch& p) {
 
 }  // namespace
 
-TEST_CASE("node frame: plane fit, sharp nodes", "[soapfilm]") {
+TEST_CASE("node frame: plane through the centroid, sharp nodes, collinear fallback", "[soapfilm]") {
   soapfilm::NodeFrameParams params;
-  // Two curves crossing in the xy plane: normal z, error 0, smooth.
-  auto f = soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()}, params);
+  const std::vector<Vec3> none(4, Vec3::Zero());
+  // Two curves crossing in the xy plane: normal z, smooth.
+  auto f = soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()}, none, params);
   REQUIRE(f.defined);
   CHECK_FALSE(f.sharp);
   CHECK(std::abs(f.normal.dot(Vec3::UnitZ())) == Approx(1.0));
   CHECK(f.fit_error == Approx(0.0).margin(1e-12));
-  // Cube corner: three orthogonal tangents cannot share a plane.
-  f = soapfilm::fit_node_frame({Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()}, params);
+  // A corner of two segments: the plane through P, P + t1, P + t2.
+  f = soapfilm::fit_node_frame({Vec3::UnitX(), Vec3(0.6, 0.8, 0.0)}, none, params);
+  REQUIRE(f.defined);
+  CHECK(std::abs(f.normal.z()) == Approx(1.0));
+  CHECK_FALSE(f.sharp);
+  // Cube corner: the plane through the centroid of {0, x, y, z} has normal
+  // (1, 1, 1)/√3, and every tangent leaves it by |n·t| = 0.577 > 0.5: sharp
+  // (CASSIE app, item 23).
+  f = soapfilm::fit_node_frame({Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()}, none, params);
   REQUIRE(f.defined);
   CHECK(f.sharp);
-  CHECK(f.fit_error == Approx(std::sqrt(1.0 / 3.0)));
-  // Collinear tangents define no plane.
-  CHECK_FALSE(soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX()}, params).defined);
-  // Eight tangents in the xy plane and one 45° out of it: the fit error stays
-  // below 0.3 but that tangent leaves the plane by more than θ = 30°, which
-  // makes the node sharp by CHI'21 §5.1.
-  const double r = std::sqrt(0.5);
-  f = soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY(), Vec3(r, r, 0),
-                                Vec3(-r, -r, 0), Vec3(r, -r, 0), Vec3(-r, r, 0), Vec3(0, r, r)},
-                               params);
-  CHECK(f.fit_error < 0.3);
+  CHECK((f.normal - Vec3(1, 1, 1).normalized()).norm() < 1e-9);
+  CHECK(f.max_offset == Approx(1.0 / std::sqrt(3.0)));
+  // Two curves crossing and a third leaving 45° out of their plane: the
+  // centroid plane tilts, and the third still leaves it by more than θ.
+  f = soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY(),
+                                Vec3(0, 1, 1).normalized()},
+                               std::vector<Vec3>(5, Vec3::Zero()), params);
+  REQUIRE(f.defined);
   CHECK(f.max_offset > 0.5);
   CHECK(f.sharp);
+  // Collinear tangents (two strokes meeting end to end): fitted to the
+  // directions towards the opposite nodes instead (item 23).
+  f = soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX()}, {Vec3(0.8, 0.6, 0), Vec3(-0.8, 0.6, 0)}, params);
+  REQUIRE(f.defined);
+  CHECK(f.from_opposite);
+  CHECK(std::abs(f.normal.z()) == Approx(1.0));
+  // ... undefined when those are collinear too.
+  CHECK_FALSE(soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX()}, {Vec3::UnitX(), -Vec3::UnitX()}, params).defined);
+  // The thesis's extra RMS test, when asked for.
+  params.sharp_error = 0.1;
+  f = soapfilm::fit_node_frame({Vec3::UnitX(), Vec3::UnitY(), Vec3(0.0, 0.0, 1.0)}, none, params);
+  CHECK(f.fit_error > 0.1);
+  CHECK(f.sharp);
+}
+
+TEST_CASE("tie rule: candidates leaving together are ordered by their opposite nodes", "[soapfilm]") {
+  // Arriving from -x; two candidates leave along +y (cos > 0.99), one going
+  // on to a node at (+1, 1), the other to (-1, 1): clockwise around +z from
+  // -x the one bending to -x comes first.
+  const soapfilm::Leaving in{-Vec3::UnitX(), -Vec3::UnitX()};
+  const std::vector<soapfilm::Leaving> c{{Vec3::UnitY(), Vec3(1, 1, 0).normalized()},
+                                         {Vec3(0.01, 1, 0).normalized(), Vec3(-1, 1, 0).normalized()},
+                                         {-Vec3::UnitY(), -Vec3::UnitY()}};
+  CHECK(soapfilm::next_clockwise(Vec3::UnitZ(), in, c, 0.99) == 1);
+  CHECK(soapfilm::next_clockwise(Vec3::UnitZ(), in, c, 1.0) == 0);  // rule off: by tangents
+  CHECK(soapfilm::next_clockwise(-Vec3::UnitZ(), in, c, 0.99) == 2);
 }
 
 TEST_CASE("next clockwise turn and parallel transport", "[soapfilm]") {
@@ -130,9 +161,10 @@ TEST_CASE("cylinder: two circles and four sides give the four side patches", "[s
   }
   CHECK(sides == std::set<std::set<CurveId>>{{1, 2, 3, 4}, {1, 2, 4, 5}, {1, 2, 5, 6}, {1, 2, 3, 6}});
   CHECK(other == 0);
-  // The walk also closes each circle's cap (the tube's two ends), as it does
-  // for the cube's faces; this is recorded in README.md.
-  CHECK(caps == 2);
+  // Not the caps: at the rim every node is smooth (circle and side span the
+  // side's tangent plane), so the walks follow the sides (as in CASSIE; a
+  // user adds the caps by hand).
+  CHECK(caps == 0);
 }
 
 TEST_CASE("a crossing curve splits a patch in two, deleting it merges them back", "[soapfilm]") {
@@ -144,7 +176,15 @@ TEST_CASE("a crossing curve splits a patch in two, deleting it merges them back"
                                     {make_line(p01, p00), {0.0, 1.0}},
                                     // across the square, edge 1 middle to edge 3 middle
                                     {make_line(Vec3(a / 2, 0, 0), Vec3(a / 2, a, 0)), {0.0, 1.0}}};
-  PreparedSession s(curves);
+  {
+    // The app's rules: the broken square's segment is searched again on both
+    // sides, and outside it the walk goes round the sheet's border.
+    PreparedSession app(curves);
+    app.draw_all(5);
+    CHECK(patch_curves(app.network()) == std::multiset<std::set<CurveId>>{{1, 2, 3, 4}, {1, 2, 3, 5}, {1, 3, 4, 5}});
+  }
+  // Without the outer border (reject_outer_boundary): the two halves.
+  PreparedSession s(curves, make_soapfilm({{"reject_outer_boundary", true}}));
   s.draw_all(4);
   REQUIRE(s.network().patches().size() == 1);
   const PatchId square = s.network().patches().begin()->first;

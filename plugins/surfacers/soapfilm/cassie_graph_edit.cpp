@@ -1,0 +1,185 @@
+#include "cassie_graph_edit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "sketchlab/geometry/closest_point.hpp"
+
+namespace sketchlab::soapfilm {
+namespace {
+
+struct Meeting {
+  double t_new = 0.0;  // on the new curve
+  CurveId old = 0;
+  double t_old = 0.0;
+  Vec3 point;  // on the old curve
+};
+
+// The curves of the edit so far and the nodes it made or changed, over the
+// network as it was.
+class Overlay {
+ public:
+  explicit Overlay(const Network& network) : network_(&network), next_node_(network.next_node_id()) {}
+
+  // Alive curves within `distance` of p: the network's and the edit's own.
+  std::vector<CurveHit> curves_near(const Vec3& p, double distance) const {
+    std::vector<CurveHit> out = network_->curves_near(p, distance);
+    for (const NetworkCurve& c : added_)
+      if (const ClosestPoint cp = closest_point(c.curve, p); cp.distance <= distance)
+        out.push_back({c.id, cp.t, cp.point, cp.distance});
+    return out;
+  }
+  // The same for the closest pair between each curve and a segment [a, b].
+  std::vector<CurveHit> curves_near_segment(const Vec3& a, const Vec3& b, double distance) const {
+    std::vector<CurveHit> out = network_->curves_near_polyline({a, b}, distance);
+    for (const NetworkCurve& c : added_)
+      if (const ClosestPoint cp = closest_point_to_polyline(c.curve, {a, b}); cp.distance <= distance)
+        out.push_back({c.id, cp.t, cp.point, cp.distance});
+    return out;
+  }
+  // The node nearest p within r with an incidence on `curve`, or 0.
+  NodeId node_on(CurveId curve, const Vec3& p, double r) const {
+    NodeId best = 0;
+    double best_d = INFINITY;
+    auto consider = [&](const Node& n) {
+      const double d = (n.position - p).norm();
+      if (d <= r && d < best_d && on_curve(n, curve)) best = n.id, best_d = d;
+    };
+    for (const NodeHit& h : network_->nodes_near(p, r))
+      if (!nodes_.count(h.node)) consider(*network_->find_node(h.node));
+    for (const auto& [id, n] : nodes_) consider(n);
+    return best;
+  }
+  Node& node(NodeId id) {
+    if (auto it = nodes_.find(id); it != nodes_.end()) return it->second;
+    return nodes_.emplace(id, *network_->find_node(id)).first->second;
+  }
+  Node& new_node(const Vec3& p) {
+    Node& n = nodes_[next_node_];
+    n.id = next_node_++;
+    n.position = p;
+    return n;
+  }
+  void add_curve(NetworkCurve c) { added_.push_back(std::move(c)); }
+  CurveId next_curve() const { return network_->next_curve_id() + added_.size(); }
+
+  Edit edit() const {
+    Edit e;
+    e.curves_added = added_;
+    for (const auto& [id, n] : nodes_) (network_->find_node(id) ? e.nodes_replaced : e.nodes_added).push_back(n);
+    return e;
+  }
+
+  static bool on_curve(const Node& n, CurveId c) {
+    return std::any_of(n.incidences.begin(), n.incidences.end(), [&](const NodeIncidence& i) { return i.curve == c; });
+  }
+
+ private:
+  const Network* network_;
+  std::vector<NetworkCurve> added_;
+  std::map<NodeId, Node> nodes_;  // new ones (ids >= the network's next) and changed copies
+  NodeId next_node_;
+};
+
+// Where the new curve meets alive curves within `distance` (see the
+// header), by t_new.
+std::vector<Meeting> meetings(const Overlay& alive, const Curve& curve, double distance) {
+  std::vector<Meeting> out;
+  if (curve.kind == CurveKind::line) {
+    // Its ends, then where it passes closest to each curve (a line may meet
+    // one curve at both ends, or at an end and inside).
+    const Vec3 a = curve.control_points.front(), b = curve.control_points.back();
+    for (const double t : {0.0, curve.t_max()})
+      for (const CurveHit& h : alive.curves_near(t == 0.0 ? a : b, distance)) out.push_back({t, h.curve, h.t, h.point});
+    const double length = (b - a).norm();
+    for (const CurveHit& h : alive.curves_near_segment(a, b, distance)) {
+      const ClosestPoint on_line = closest_point(curve, h.point);
+      const bool at_end = std::any_of(out.begin(), out.end(), [&](const Meeting& m) {
+        return m.old == h.curve && std::abs(m.t_new - on_line.t) * length <= 2.0 * distance;
+      });
+      if (!at_end) out.push_back({on_line.t, h.curve, h.t, h.point});
+    }
+  } else {
+    const int K = curve.segment_count();
+    for (int k = 0; k <= (curve.closed ? K - 1 : K); ++k)
+      for (const CurveHit& h : alive.curves_near(curve.control_points[static_cast<std::size_t>(3 * k)], distance))
+        out.push_back({static_cast<double>(k), h.curve, h.t, h.point});
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Meeting& a, const Meeting& b) { return a.t_new < b.t_new; });
+  return out;
+}
+
+// Whether the node already holds curve c at (about) parameter t: one node
+// met twice at one place (two old curves crossing there) keeps one incidence.
+bool has_incidence(const Node& n, CurveId c, double t) {
+  return std::any_of(n.incidences.begin(), n.incidences.end(),
+                     [&](const NodeIncidence& i) { return i.curve == c && std::abs(i.t - t) < 1e-6; });
+}
+
+void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams& params) {
+  const Curve& curve = in.curve;
+  if (const std::string why = validate(curve); !why.empty()) throw std::invalid_argument("cassie_graph_edit: " + why);
+  if (!(in.scale > 0.0) || !std::isfinite(in.scale)) throw std::invalid_argument("cassie_graph_edit: scale must be > 0");
+  const double delta = params.delta / in.scale;
+  const CurveId c = overlay.next_curve();
+  const double T = curve.t_max();
+  auto own_t = [&](double t) { return curve.closed && t >= T ? 0.0 : std::clamp(t, 0.0, T); };
+
+  std::vector<std::pair<NodeId, Vec3>> on_new;  // nodes on the new curve, with positions
+  const double meet = curve.kind == CurveKind::line ? params.line_meets * delta : params.on_curve;
+  for (const Meeting& m : meetings(overlay, curve, meet)) {
+    const double t = own_t(m.t_new);
+    // 1. A node of the old curve within δ of the meeting point.
+    if (const NodeId old_node = overlay.node_on(m.old, m.point, params.reuse_old * delta)) {
+      Node& n = overlay.node(old_node);
+      if (!has_incidence(n, c, t)) n.incidences.push_back({c, t});
+      if (std::none_of(on_new.begin(), on_new.end(), [&](const auto& p) { return p.first == old_node; }))
+        on_new.emplace_back(old_node, n.position);
+      continue;
+    }
+    // 2. A node already on the new curve within 0.5δ.
+    NodeId mine = 0;
+    double best = params.reuse_new * delta;
+    for (const auto& [id, p] : on_new)
+      if ((p - m.point).norm() <= best) best = (p - m.point).norm(), mine = id;
+    if (mine) {
+      Node& n = overlay.node(mine);
+      if (!Overlay::on_curve(n, m.old)) n.incidences.push_back({m.old, m.t_old});
+      continue;
+    }
+    // 3. A new node splitting the old curve.
+    Node& n = overlay.new_node(m.point);
+    n.incidences = {{c, t}, {m.old, m.t_old}};
+    on_new.emplace_back(n.id, n.position);
+  }
+  // Every stroke end is a node (a closed stroke has one).
+  for (double t_end : curve.closed ? std::vector<double>{0.0} : std::vector<double>{0.0, T}) {
+    const Vec3 p = curve.control_points[t_end == 0.0 ? 0 : curve.control_points.size() - 1];
+    if (std::any_of(on_new.begin(), on_new.end(),
+                    [&](const auto& q) { return (q.second - p).norm() <= params.reuse_new * delta; }))
+      continue;
+    Node& n = overlay.new_node(p);
+    n.incidences = {{c, t_end}};
+    on_new.emplace_back(n.id, p);
+  }
+  NetworkCurve nc;
+  nc.id = c;
+  nc.curve = curve;
+  nc.layer = Layer::shape;
+  nc.source_stroke = in.stroke;
+  nc.keypoints = default_keypoints(curve);
+  overlay.add_curve(std::move(nc));
+}
+
+}  // namespace
+
+Edit cassie_graph_edit(const Network& network, const std::vector<CassieCurve>& curves,
+                       const CassieGraphParams& params) {
+  Overlay overlay(network);
+  for (const CassieCurve& c : curves) add_curve(overlay, c, params);
+  return overlay.edit();
+}
+
+}  // namespace sketchlab::soapfilm

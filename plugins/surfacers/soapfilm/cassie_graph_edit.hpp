@@ -1,0 +1,46 @@
+#pragma once
+// CASSIE's curve graph, rebuilt while its own curves are replayed (CASSIE
+// app, item 22): every stroke end is a node; where the new curve meets an
+// alive curve it reuses a node of the old curve within δ, else a node of the
+// new curve within 0.5δ, else a new node splits the old curve; a closed
+// stroke is one node. CASSIE splits a Bézier stroke at each intersection it
+// enforced (item 12), so the intersections of a replayed Bézier curve are its
+// joints lying on an alive curve; a line is not split (item 17) and meets a
+// curve at an end lying on it, or where it passes within 0.2δ of it (item
+// 17: a node is made only when the constraint ends that close to the final
+// line).
+#include <vector>
+
+#include "sketchlab/edit.hpp"
+#include "sketchlab/network.hpp"
+
+namespace sketchlab::soapfilm {
+
+struct CassieGraphParams {
+  double delta = 0.02;       // δ at zoom 1 (m); δ/s at zoom s
+  // m: a joint this close to an alive curve lies on it. CASSIE solves in
+  // single precision; the joints of its enforced intersections lie within
+  // ~1e-4 m of the other curve, others farther (measured on the bundled
+  // sessions, README.md).
+  double on_curve = 1e-4;
+  double line_meets = 0.2;   // ×δ: a line meets a curve passing this close (item 17)
+  double reuse_old = 1.0;    // ×δ: reuse a node of the old curve this close (item 22)
+  double reuse_new = 0.5;    // ×δ: reuse a node of the new curve this close (item 22)
+};
+
+// One curve of a replayed stroke.
+struct CassieCurve {
+  StrokeId stroke = 0;   // source_stroke of the network curve
+  Curve curve;
+  double scale = 1.0;    // zoom s > 0 when it was drawn
+};
+
+// The edit adding `curves` to `network` in order (a stroke and its mirrored
+// twin: each later one meets the earlier ones too), with CASSIE's nodes: one
+// network curve each (ids from network.next_curve_id(), layer shape), new
+// nodes and the existing nodes they reuse (as nodes_replaced). Throws
+// std::invalid_argument for an invalid curve or scale.
+Edit cassie_graph_edit(const Network& network, const std::vector<CassieCurve>& curves,
+                       const CassieGraphParams& params = {});
+
+}  // namespace sketchlab::soapfilm

@@ -1,0 +1,276 @@
+#include "cassie_replay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/session.hpp"
+#include "timed_soapfilm.hpp"
+
+namespace sketchlab::soapfilm {
+namespace {
+
+// What the replay knows of each curve it added.
+struct Curves {
+  std::map<CurveId, std::int64_t> cassie_of;  // network curve -> CASSIE stroke
+  std::map<std::int64_t, CurveId> curve_of;   // and back
+};
+
+// Adds the CASSIE curves of one action (a stroke and its mirrored twin) with
+// CASSIE's graph; the session sees one stroke, whose id they all carry.
+class CassieCurves : public Corrector {
+ public:
+  CassieCurves(const CassieSession& session, const CassieGraphParams& params, Curves& curves)
+      : session_(&session), params_(params), curves_(&curves) {}
+  // The strokes (indices into session.strokes) the next StrokeEvent adds.
+  void next(std::vector<std::size_t> strokes) { next_ = std::move(strokes); }
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    Correction c;
+    std::vector<CassieCurve> in;
+    for (std::size_t i : next_) {
+      const CassieStroke& s = session_->strokes[i];
+      in.push_back({stroke.id, s.curve, s.canvas_scale});
+    }
+    try {
+      c.edit = cassie_graph_edit(sketch.network, in, params_);
+      for (std::size_t k = 0; k < next_.size(); ++k) {
+        const std::int64_t id = session_->strokes[next_[k]].id;
+        curves_->cassie_of[c.edit.curves_added[k].id] = id;
+        curves_->curve_of[id] = c.edit.curves_added[k].id;
+      }
+    } catch (const std::exception& e) {
+      c.error = e.what();
+    }
+    return c;
+  }
+
+ private:
+  const CassieSession* session_;
+  CassieGraphParams params_;
+  Curves* curves_;
+  std::vector<std::size_t> next_;
+};
+
+struct Step {
+  double time = 0.0;
+  int order = 0;  // at one time: stroke creations, deletions, then patch edits
+  std::string kind;
+  std::vector<std::size_t> index;  // into session.strokes (all created or deleted at `time`) or patches (one)
+};
+
+Stroke placeholder_stroke(StrokeId id) {
+  // The corrector ignores the samples; the session only checks them.
+  Stroke s;
+  s.id = id;
+  Sample a, b;
+  b.position = Vec3(0.01, 0.0, 0.0);
+  b.time = 0.1;
+  s.samples = {a, b};
+  return s;
+}
+
+StrokeSet strokes_of(const Curves& curves, const Patch& p) {
+  StrokeSet out;
+  for (const OrientedSegment& piece : p.boundary) out.insert(curves.cassie_of.at(piece.curve));
+  return out;
+}
+
+// A point on the patch (its first triangle's centroid), for a
+// DeletePatchEvent that must pick exactly this patch.
+std::optional<Vec3> point_on(const Patch& p) {
+  if (p.mesh.faces.empty()) return std::nullopt;
+  const auto& f = p.mesh.faces.front();
+  return (p.mesh.vertices[f[0]] + p.mesh.vertices[f[1]] + p.mesh.vertices[f[2]]) / 3.0;
+}
+
+}  // namespace
+
+ReplayFigures& ReplayFigures::operator+=(const ReplayFigures& o) {
+  cassie_created += o.cassie_created;
+  ours_created += o.ours_created;
+  matched_created += o.matched_created;
+  matched_elsewhere += o.matched_elsewhere;
+  ours_removed += o.ours_removed;
+  cassie_final += o.cassie_final;
+  ours_final += o.ours_final;
+  matched_final += o.matched_final;
+  return *this;
+}
+
+ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmParams& params,
+                                   const ReplayOptions& options) {
+  ReplayResult result;
+  result.warnings = session.warnings;
+
+  // Strokes created (deleted) at one time are one action: a stroke and its
+  // mirrored twin, as CASSIE adds (removes) them.
+  std::vector<Step> steps;
+  std::map<double, std::vector<std::size_t>> created, deleted;
+  for (std::size_t i = 0; i < session.strokes.size(); ++i) {
+    const CassieStroke& s = session.strokes[i];
+    created[s.created].push_back(i);
+    if (s.deleted) deleted[*s.deleted].push_back(i);
+  }
+  for (const auto& [t, list] : created) steps.push_back({t, 0, "stroke", list});
+  for (const auto& [t, list] : deleted) steps.push_back({t, 1, "delete", list});
+  if (options.user_patch_edits)
+    for (std::size_t i = 0; i < session.patches.size(); ++i) {
+      const CassiePatch& p = session.patches[i];
+      if (!p.automatic && p.created && p.hand) steps.push_back({*p.created, 2, "add_patch", {i}});
+      if (p.deleted_by_hand) steps.push_back({*p.deleted_by_hand, 3, "delete_patch", {i}});
+    }
+  std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
+    return a.time != b.time ? a.time < b.time : a.order < b.order;
+  });
+
+  auto surfacer = std::make_shared<TimedSoapfilm>(params);
+  Curves curves;
+  auto corrector = std::make_shared<CassieCurves>(session, options.graph, curves);
+  Session live(Workspace{}, corrector, surfacer);
+  std::map<PatchId, StrokeSet> ours;          // our alive patches -> strokes
+  std::map<PatchId, bool> automatic;
+  std::map<std::int64_t, PatchId> of_cassie;  // CASSIE manual patch -> ours made for it
+  std::map<std::int64_t, StrokeId> action_of;  // CASSIE stroke -> the session stroke that added it
+  std::vector<double> group_times;
+  StrokeId next_stroke = 1;
+
+  for (const Step& st : steps) {
+    ReplayEvent ev;
+    ev.kind = st.kind;
+    ev.time = st.time;
+    const bool stroke_event = st.kind == "stroke" || st.kind == "delete";
+    if (stroke_event) {
+      ev.element = session.strokes[st.index.front()].id;
+      group_times.push_back(st.time);
+    } else {
+      ev.element = session.patches[st.index.front()].id;
+    }
+    ev.group = group_times.empty() ? 0 : group_times.size() - 1;
+
+    StepReport report;
+    if (st.kind == "stroke") {
+      const StrokeId id = next_stroke++;
+      for (std::size_t i : st.index) action_of[session.strokes[i].id] = id;
+      corrector->next(st.index);
+      report = live.handle(Event{st.time, StrokeEvent{placeholder_stroke(id)}});
+    } else if (st.kind == "delete") {
+      // Whole actions by their session stroke; a twin deleted alone by a
+      // point on it.
+      std::map<StrokeId, int> left;
+      for (const auto& [cassie, id] : action_of)
+        if (curves.curve_of.count(cassie) && live.sketch().network.find_curve(curves.curve_of.at(cassie))) ++left[id];
+      std::map<StrokeId, std::vector<std::int64_t>> asked;
+      for (std::size_t i : st.index) asked[action_of[session.strokes[i].id]].push_back(session.strokes[i].id);
+      for (const auto& [id, list] : asked) {
+        if (static_cast<int>(list.size()) == left[id]) {
+          report = live.handle(Event{st.time, DeleteStrokeEvent{id}});
+        } else {
+          for (std::int64_t cassie : list) {
+            const CurveId c = curves.curve_of.at(cassie);
+            const NetworkCurve* nc = live.sketch().network.find_curve(c);
+            if (!nc) continue;
+            report = live.handle(Event{st.time, DeleteNearEvent{evaluate(nc->curve, 0.5 * nc->curve.t_max()), 1e-9}});
+            if (live.sketch().network.find_curve(c))
+              result.warnings.push_back(session.name + ": stroke " + std::to_string(cassie) +
+                                        " lies on another curve and could not be deleted alone");
+          }
+        }
+        if (!report.error.empty()) ev.error = report.error;
+      }
+    } else if (st.kind == "add_patch") {
+      report = live.handle(Event{st.time, AddPatchEvent{*session.patches[st.index.front()].hand}});
+    } else {
+      // The user deleted a CASSIE patch: delete ours over the same strokes
+      // (the one made for it if it was a manual one).
+      const CassiePatch& cp = session.patches[st.index.front()];
+      std::optional<PatchId> target;
+      if (auto it = of_cassie.find(cp.id); it != of_cassie.end() && ours.count(it->second)) target = it->second;
+      for (const auto& [id, strokes] : ours)
+        if (!target && strokes == cp.strokes) target = id;
+      if (!target) {
+        ev.error = "no patch of ours over the strokes of CASSIE patch " + std::to_string(cp.id);
+      } else {
+        const Patch& p = live.sketch().network.patches().at(*target);
+        if (const auto at = point_on(p); at)
+          report = live.handle(Event{st.time, DeletePatchEvent{*at}});
+        else
+          ev.error = "patch " + std::to_string(*target) + " has no mesh to point at";
+      }
+    }
+    if (ev.error.empty()) ev.error = report.error;
+    SurfacerCost cost = surfacer->take();
+    ev.surfacer_wall_ms = cost.wall_ms;
+    ev.surfacer_cpu_ms = cost.cpu_ms;
+    ev.patches_meshed = static_cast<int>(cost.meshed.size());
+    ev.meshed = std::move(cost.meshed);
+
+    // What changed: patch ids are never reused, so a diff of the id sets.
+    const Network& net = live.sketch().network;
+    for (auto it = ours.begin(); it != ours.end();) {
+      if (net.patches().count(it->first)) {
+        ++it;
+        continue;
+      }
+      if (automatic[it->first]) {
+        ev.removed.push_back(it->second);
+        ++result.figures.ours_removed;
+      }
+      it = ours.erase(it);
+    }
+    const PatchId first_new = ours.empty() ? 0 : ours.rbegin()->first + 1;
+    for (auto it = net.patches().lower_bound(first_new); it != net.patches().end(); ++it) {
+      if (ours.count(it->first)) continue;
+      const StrokeSet strokes = strokes_of(curves, it->second);
+      ours[it->first] = strokes;
+      automatic[it->first] = it->second.automatic;
+      if (it->second.automatic) {
+        ev.added.push_back(strokes);
+      } else if (st.kind == "add_patch") {
+        of_cassie[ev.element] = it->first;
+      }
+    }
+    result.events.push_back(std::move(ev));
+  }
+
+  // Along the way: CASSIE's automatic patches by group.
+  auto group_of = [&](double t) -> std::optional<std::size_t> {
+    auto it = std::upper_bound(group_times.begin(), group_times.end(), t + 1e-4);
+    if (it == group_times.begin()) return std::nullopt;
+    return static_cast<std::size_t>(it - group_times.begin() - 1);
+  };
+  std::map<std::pair<std::size_t, StrokeSet>, int> cassie_at, ours_at;
+  std::set<StrokeSet> ours_ever;
+  for (const ReplayEvent& e : result.events)
+    for (const StrokeSet& s : e.added) {
+      ++ours_at[{e.group, s}];
+      ours_ever.insert(s);
+      ++result.figures.ours_created;
+    }
+  std::set<std::int64_t> alive;
+  for (const CassieStroke& s : session.strokes)
+    if (!s.deleted) alive.insert(s.id);
+  std::set<StrokeSet> cassie_final;
+  for (const CassiePatch& p : session.patches) {
+    if (!p.automatic || !p.created) continue;
+    ++result.figures.cassie_created;
+    if (const auto g = group_of(*p.created)) ++cassie_at[{*g, p.strokes}];
+    const bool all_alive = std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); });
+    if (!p.deleted_by_hand && all_alive && !p.strokes.empty()) cassie_final.insert(p.strokes);
+  }
+  for (const auto& [key, n] : cassie_at) {
+    const int m = std::min(n, ours_at.count(key) ? ours_at.at(key) : 0);
+    result.figures.matched_created += m;
+    if (n > m && ours_ever.count(key.second)) result.figures.matched_elsewhere += n - m;
+  }
+  // At the end.
+  std::set<StrokeSet> ours_final;
+  for (const auto& [id, strokes] : ours)
+    if (automatic[id]) ours_final.insert(strokes);
+  result.figures.cassie_final = static_cast<int>(cassie_final.size());
+  result.figures.ours_final = static_cast<int>(ours_final.size());
+  for (const StrokeSet& s : cassie_final) result.figures.matched_final += ours_final.count(s) ? 1 : 0;
+  return result;
+}
+
+}  // namespace sketchlab::soapfilm

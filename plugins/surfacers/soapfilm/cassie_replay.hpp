@@ -1,0 +1,74 @@
+#pragma once
+// Incremental comparison with CASSIE, the surfacer's counterpart of
+// teacher-forced: CASSIE's own curves are replayed in their creation order
+// (deletions included) through a Session whose corrector adds each curve with
+// CASSIE's graph (cassie_graph_edit.hpp) and whose surfacer is this plugin;
+// the patches the surfacer creates and removes, and at which event, are
+// compared with CASSIE's patch log (raw_data: allCreatedPatches, foundByAlgo,
+// add-surface times).
+//
+// Events are grouped by time: the strokes of a mirrored pair share their
+// creation time, and CASSIE logs the patches a stroke event made at that
+// event's time (or, rarely, just after). A CASSIE automatic patch belongs to
+// the last group at or before its time; one of ours to the group of the
+// event that made it. A CASSIE patch is matched along the way when we create
+// a patch over the same strokes in the same group (one for one).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cassie_graph_edit.hpp"
+#include "cassie_session.hpp"
+#include "soapfilm_params.hpp"
+
+namespace sketchlab::soapfilm {
+
+struct ReplayOptions {
+  CassieGraphParams graph;
+  // Replay the user's own patch edits too: an add-patch at the hand position
+  // of each manual CASSIE patch, and the deletion of ours matching a patch
+  // the user deleted (same strokes). They change what later searches see
+  // (a segment bounding two patches), as they did in CASSIE.
+  bool user_patch_edits = true;
+};
+
+struct ReplayFigures {
+  // Along the way (automatic patches only).
+  int cassie_created = 0;      // CASSIE automatic patches with an add-surface time
+  int ours_created = 0;        // automatic patches we created
+  int matched_created = 0;     // same strokes, same event group
+  int matched_elsewhere = 0;   // CASSIE's not matched, but we created those strokes at another group
+  int ours_removed = 0;        // automatic patches we removed (crossed, or a boundary curve deleted)
+  // At the end: CASSIE's automatic patches not deleted by hand whose strokes
+  // are all alive, vs our automatic patches alive (unique stroke sets).
+  int cassie_final = 0, ours_final = 0, matched_final = 0;
+  double recall_created() const { return cassie_created ? double(matched_created) / cassie_created : 0.0; }
+  double precision_created() const { return ours_created ? double(matched_created) / ours_created : 0.0; }
+  double recall_final() const { return cassie_final ? double(matched_final) / cassie_final : 0.0; }
+  double precision_final() const { return ours_final ? double(matched_final) / ours_final : 0.0; }
+  ReplayFigures& operator+=(const ReplayFigures& o);
+};
+
+struct ReplayEvent {
+  std::string kind;       // "stroke", "delete", "add_patch", "delete_patch"
+  std::int64_t element = 0;  // CASSIE stroke or patch id
+  double time = 0.0;
+  std::size_t group = 0;  // index of its time group (stroke events only share groups)
+  std::string error;      // what the session reported, if anything
+  std::vector<StrokeSet> added, removed;  // our automatic patches (strokes)
+  double surfacer_wall_ms = 0.0, surfacer_cpu_ms = 0.0;  // this plugin's update/command
+  int patches_meshed = 0;
+  std::vector<PatchMeshTimings> meshed;  // per patch meshed: CPU ms of each stage
+};
+
+struct ReplayResult {
+  std::vector<ReplayEvent> events;  // in replay order
+  ReplayFigures figures;
+  std::vector<std::string> warnings;  // the session loader's and the replay's
+};
+
+// Replays `session` with a fresh surfacer of parameters `params`.
+ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmParams& params,
+                                   const ReplayOptions& options = {});
+
+}  // namespace sketchlab::soapfilm
