@@ -5,15 +5,11 @@
 #include <map>
 #include <numbers>
 
+#include "normal_orientation.hpp"
 #include "plane_fit.hpp"
 
 namespace sketchlab::hermite_rbf {
 namespace {
-
-int cyclic_distance(int a, int b, int n, bool closed) {
-  const int d = std::abs(a - b);
-  return closed ? std::min(d, n - d) : d;
-}
 
 Vec3 any_perpendicular(const Vec3& v) {
   const Vec3 axis = std::abs(v.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
@@ -139,18 +135,23 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
   }
 
   // Intersections (§6): a plane fitted to the samples each side of the node
-  // on every curve through it; oriented like the curves' default normals.
-  const int w = params.intersection_window;
-  std::vector<std::vector<NormalKey>> crossing(curves.size());
-  for (const auto& [node_id, node] : network.nodes()) {
+  // on every curve through it, signed like the curves' normals there.
+  struct Crossing {
     std::vector<std::pair<std::size_t, int>> at;  // (curve index, sample)
+    Vec3 normal, position;
+    bool fixed = false;  // signed by exported normals
+  };
+  std::vector<Crossing> crossings;
+  const int w = params.intersection_window;
+  for (const auto& [node_id, node] : network.nodes()) {
+    Crossing x;
     for (const NodeIncidence& inc : node.incidences)
-      if (auto it = index.find(inc.curve); it != index.end()) at.emplace_back(it->second, nearest_sample(curves[it->second], inc.t));
-    std::sort(at.begin(), at.end());
-    at.erase(std::unique(at.begin(), at.end()), at.end());
-    if (at.size() < 2) continue;
+      if (auto it = index.find(inc.curve); it != index.end()) x.at.emplace_back(it->second, nearest_sample(curves[it->second], inc.t));
+    std::sort(x.at.begin(), x.at.end());
+    x.at.erase(std::unique(x.at.begin(), x.at.end()), x.at.end());
+    if (x.at.size() < 2) continue;
     std::vector<Vec3> pts;
-    for (const auto& [c, i0] : at) {
+    for (const auto& [c, i0] : x.at) {
       const CurveSamples& s = curves[c];
       const int n = static_cast<int>(s.points.size());
       for (int d = -w; d <= w; ++d) {
@@ -162,21 +163,58 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
     }
     const PrincipalAxes ax = principal_axes(pts);
     if (!(ax.spread[1] > 1e-6 * ax.spread[0])) continue;  // tangent curves: no plane
-    Vec3 normal = ax.axes[2];
-    Vec3 reference = Vec3::Zero();
-    for (const auto& [c, i0] : at) reference += curves[c].normals[static_cast<std::size_t>(i0)];
-    if (reference.dot(normal) < 0.0) normal = -normal;
-    for (const auto& [c, i0] : at)
-      if (!exported[c]) crossing[c].push_back({i0, normal});
+    Vec3 reference = Vec3::Zero(), exported_reference = Vec3::Zero();
+    x.position = Vec3::Zero();
+    for (const auto& [c, i0] : x.at) {
+      const Vec3& n = curves[c].normals[static_cast<std::size_t>(i0)];
+      reference += n;
+      if (exported[c]) exported_reference += n, x.fixed = true;
+      x.position += curves[c].points[static_cast<std::size_t>(i0)];
+    }
+    x.position /= double(x.at.size());
+    x.normal = ax.axes[2];
+    if ((x.fixed ? exported_reference : reference).dot(x.normal) < 0.0) x.normal = -x.normal;
+    crossings.push_back(std::move(x));
   }
+
+  // One orientation across the network (normal_orientation.hpp): crossings
+  // next to each other along a curve are neighbours. Per-curve rules may
+  // disagree between neighbouring curves; the surface must not fold there.
+  std::vector<std::vector<std::pair<int, std::size_t>>> along(curves.size());  // (sample, crossing)
+  for (std::size_t k = 0; k < crossings.size(); ++k)
+    for (const auto& [c, i0] : crossings[k].at) along[c].emplace_back(i0, k);
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
   for (std::size_t c = 0; c < curves.size(); ++c) {
-    if (crossing[c].empty()) continue;
-    const int n = static_cast<int>(curves[c].points.size());
-    std::vector<NormalKey> keys = crossing[c];
-    for (const NormalKey& k : defaults[c]) {
-      bool near = false;
-      for (const NormalKey& x : crossing[c]) near = near || cyclic_distance(k.sample, x.sample, n, curves[c].closed) <= w;
-      if (!near) keys.push_back(k);
+    std::sort(along[c].begin(), along[c].end());
+    for (std::size_t i = 0; i + 1 < along[c].size(); ++i) edges.emplace_back(along[c][i].second, along[c][i + 1].second);
+    if (curves[c].closed && along[c].size() > 2) edges.emplace_back(along[c].back().second, along[c].front().second);
+  }
+  {
+    std::vector<Vec3> normals, positions;
+    std::vector<bool> fixed;
+    for (const Crossing& x : crossings) normals.push_back(x.normal), positions.push_back(x.position), fixed.push_back(x.fixed);
+    const std::vector<bool> flip = consistent_flips(normals, positions, edges, fixed);
+    for (std::size_t k = 0; k < crossings.size(); ++k)
+      if (flip[k]) crossings[k].normal = -crossings[k].normal;
+  }
+
+  // A curve through crossings takes their normals (the curves around them
+  // say what the surface does there; the per-curve rules only guess); the
+  // default keys remain beyond its first and last crossing (a dangling end),
+  // signed like the crossing they continue. Curves without crossings keep
+  // the default rules.
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    if (exported[c] || along[c].empty()) continue;
+    std::vector<NormalKey> keys;
+    for (const auto& [i0, k] : along[c]) keys.push_back({i0, crossings[k].normal});
+    if (!curves[c].closed) {
+      const int first = along[c].front().first, last = along[c].back().first;
+      const bool flip_start = curves[c].normals[static_cast<std::size_t>(first)].dot(crossings[along[c].front().second].normal) < 0.0;
+      const bool flip_end = curves[c].normals[static_cast<std::size_t>(last)].dot(crossings[along[c].back().second].normal) < 0.0;
+      for (const NormalKey& d : defaults[c]) {
+        if (d.sample < first - w) keys.push_back({d.sample, flip_start ? -d.normal : d.normal});
+        if (d.sample > last + w) keys.push_back({d.sample, flip_end ? -d.normal : d.normal});
+      }
     }
     propagate_normals(curves[c], std::move(keys));
   }

@@ -14,12 +14,15 @@ class HermiteRbfSurfacer : public Surfacer {
   explicit HermiteRbfSurfacer(const Params& p) : params_(hermite_rbf::hermite_rbf_params(p)) {}
   SurfaceUpdate update(const Sketch&, const Edit&) override { return {}; }
   SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) override {
-    return hermite_rbf::surface_command(sketch, command, params_);
+    return hermite_rbf::surface_command(sketch, command, params_, &state_);
   }
-  SurfaceUpdate recompute(const Sketch& sketch) override { return hermite_rbf::recompute_surface(sketch, params_); }
+  SurfaceUpdate recompute(const Sketch& sketch) override {
+    return hermite_rbf::recompute_surface(sketch, params_, &state_);
+  }
 
  private:
   hermite_rbf::HermiteRbfParams params_;
+  hermite_rbf::SurfaceState state_;  // the previous surface's model: the next recompute updates what changed
 };
 
 PluginDescriptor describe() {

@@ -1,0 +1,23 @@
+#pragma once
+// Consistent signs for unsigned normals on a graph (Hoppe, DeRose, Duchamp,
+// McDonald & Stuetzle 1992, "Surface reconstruction from unorganized points",
+// §3.3): neighbouring normals of a smooth surface point the same way, so the
+// sign is propagated from a seed along a maximum spanning tree of the
+// agreement |n_i · n_j| (Prim's order: the strongest agreement first). Each
+// connected part holding no fixed normal is then oriented so that its normals
+// point, on the whole, away from its centroid; a part holding fixed normals
+// (the corrector's) is grown from them.
+#include <utility>
+#include <vector>
+
+#include "sketchlab/types.hpp"
+
+namespace sketchlab::hermite_rbf {
+
+// normals: unit, or zero (takes no part); positions: m, one per normal;
+// edges: index pairs; fixed: never flipped. Returns which to negate.
+// Deterministic (ties go to the lower index).
+std::vector<bool> consistent_flips(const std::vector<Vec3>& normals, const std::vector<Vec3>& positions,
+                                   const std::vector<std::pair<std::size_t, std::size_t>>& edges, const std::vector<bool>& fixed);
+
+}  // namespace sketchlab::hermite_rbf
