@@ -13,13 +13,14 @@
 // Built by plugins/surfacers/hermite_rbf/CMakeLists.txt (it needs the
 // plugin's code), hence not named bench_*.cpp.
 //
-//   hermite_rbf_quality [--stack FILE] [--out DIR] [--dense] [name=value ...] [RECORDING|SKETCH.json ...]
+//   hermite_rbf_quality [--stack FILE] [--out DIR] [--dense] [--measure] [name=value ...] [RECORDING|SKETCH.json ...]
 //
 // Recordings default to data/recordings/*.jsonl of the source tree; a
 // sketch.json (as `sketchlab run` writes) is surfaced as it is, without
 // replaying. name=value sets a surfacer parameter. --out writes
 // DIR/<session>/sketch.json with the surface as its patch (for `sketchlab
-// render`).
+// render`). --measure measures the patches already in each sketch.json
+// instead of building a surface (the figures of another version's run).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -29,7 +30,9 @@
 #include <vector>
 
 #include "hermite_rbf_params.hpp"
+#include "curve_samples.hpp"
 #include "hermite_rbf_surfacer.hpp"
+#include "mesh_topology.hpp"
 #include "point_tree.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/io/sketch_json.hpp"
@@ -38,6 +41,7 @@
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/run/stack.hpp"
 #include "stage_timer.hpp"
+#include "surface_quality.hpp"
 
 using namespace sketchlab;
 using namespace sketchlab::hermite_rbf;
@@ -59,6 +63,7 @@ struct Options {
   fs::path stack = fs::path(SKETCHLAB_SOURCE_DIR) / "configs/stacks/cassie-hermite_rbf.yaml";
   fs::path out;
   bool dense = false;
+  bool measure = false;
   std::vector<std::string> overrides;  // surfacer parameters, name=value
   std::vector<fs::path> inputs;
 };
@@ -72,34 +77,55 @@ Sketch final_sketch(const fs::path& input, const StackConfig& stack, const Plugi
   return replay(recording, instance).session.sketch();
 }
 
+// The figures of `mesh` against the network's curves (sampled as the
+// surfacer samples them).
+void measure(const std::string& name, const Mesh& mesh, const Network& network, const HermiteRbfParams& params) {
+  std::vector<Vec3> samples;
+  for (const CurveSamples& c : sample_curves(network, params.sampling)) samples.insert(samples.end(), c.points.begin(), c.points.end());
+  Box3 box;
+  for (const Vec3& p : samples) box.extend(p);
+  const double diagonal = box.diagonal().norm();
+  const SurfaceQuality q = surface_quality(mesh, PointTree(samples), quality_margin * diagonal);
+  const MeshTopology t = mesh_topology(mesh);
+  print(name + ".faces", double(mesh.faces.size()), "count");
+  print(name + ".components", t.components, "count");
+  print(name + ".watertight", t.watertight_manifold(), "bool");
+  print(name + ".boundary_edges", t.boundary_edges, "count");
+  print(name + ".area", q.area, "m2");
+  print(name + ".curve_distance_mean", q.distance_mean, "m");
+  print(name + ".curve_distance_p95", q.distance_p95, "m");
+  print(name + ".curve_distance_max", q.distance_max, "m");
+  print(name + ".curve_distance_p95_rel", q.distance_p95 / diagonal, "diagonal");
+  print(name + ".curve_distance_max_rel", q.distance_max / diagonal, "diagonal");
+  print(name + ".outside_area", 100.0 * q.outside_fraction, "%");
+}
+
 void run(const fs::path& input, const Options& o, const StackConfig& stack, const PluginHost& host, const HermiteRbfParams& params) {
   std::string name = input.stem().string();
   if (input.extension() == ".json") name = input.parent_path().parent_path().filename().string();  // runs/<recording>/<stack>/sketch.json
   Sketch sketch = final_sketch(input, stack, host);
+  if (o.measure) {
+    Mesh all;
+    for (const auto& [id, patch] : sketch.network.patches()) {
+      const int offset = static_cast<int>(all.vertices.size());
+      all.vertices.insert(all.vertices.end(), patch.mesh.vertices.begin(), patch.mesh.vertices.end());
+      for (auto f : patch.mesh.faces) all.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+    }
+    print(name + ".curves", double(sketch.network.curves().size()), "count");
+    measure(name, all, sketch.network, params);
+    std::fflush(stdout);
+    return;
+  }
   const StageTimer timer;
   const SurfaceResult r = surface_from_network(sketch.network, params);
   const double wall = timer.wall_ms(), cpu = timer.cpu_ms();
   const auto& s = r.stats;
-  Box3 box;
-  for (const auto& [id, nc] : sketch.network.curves())
-    for (const Vec3& p : nc.curve.control_points) box.extend(p);
-  const double diagonal = box.diagonal().norm();
   print(name + ".curves", s.at("curves"), "count");
   print(name + ".constraints", double(r.constraints.size()), "count");
   print(name + ".rows", double(r.constraints.rows()), "count");
   print(name + ".total.wall", wall, "ms");
   print(name + ".total.cpu", cpu, "ms");
-  print(name + ".faces", s.at("mesh_faces"), "count");
-  print(name + ".components", s.at("components"), "count");
-  print(name + ".watertight", s.at("watertight"), "bool");
-  print(name + ".boundary_edges", s.at("boundary_edges"), "count");
-  print(name + ".area", s.at("area"), "m2");
-  print(name + ".curve_distance_mean", s.at("curve_distance_mean"), "m");
-  print(name + ".curve_distance_p95", s.at("curve_distance_p95"), "m");
-  print(name + ".curve_distance_max", s.at("curve_distance_max"), "m");
-  print(name + ".curve_distance_p95_rel", s.at("curve_distance_p95") / diagonal, "diagonal");
-  print(name + ".curve_distance_max_rel", s.at("curve_distance_max") / diagonal, "diagonal");
-  print(name + ".outside_area", 100.0 * s.at("outside_area_fraction"), "%");
+  measure(name, r.mesh, sketch.network, params);
   print(name + ".trimmed_area", 100.0 * s.at("trimmed_area_fraction"), "%");
   print(name + ".residual_point", s.at("residual_point_max"), "m");
   print(name + ".residual_normal", s.at("residual_normal_max"), "1");
@@ -107,9 +133,11 @@ void run(const fs::path& input, const Options& o, const StackConfig& stack, cons
     HermiteRbfParams d = params;
     d.solver = Solver::dense;
     const SurfaceResult reference = surface_from_network(sketch.network, d);
+    Box3 box;
+    for (const Vec3& p : r.constraints.points) box.extend(p);
     const double h = std::max(one_sided(r.mesh, reference.mesh), one_sided(reference.mesh, r.mesh));
     print(name + ".hausdorff_dense", h, "m");
-    print(name + ".hausdorff_dense_rel", h / diagonal, "diagonal");
+    print(name + ".hausdorff_dense_rel", h / box.diagonal().norm(), "diagonal");
   }
   std::fflush(stdout);
   if (!o.out.empty()) {
@@ -137,10 +165,12 @@ int main(int argc, char** argv) {
       (a == "--stack" ? o.stack : o.out) = argv[++i];
     } else if (a == "--dense") {
       o.dense = true;
+    } else if (a == "--measure") {
+      o.measure = true;
     } else if (a.find('=') != std::string::npos) {
       o.overrides.push_back(a);
     } else if (a.starts_with("-")) {
-      std::fprintf(stderr, "usage: hermite_rbf_quality [--stack FILE] [--out DIR] [--dense] [name=value ...] [RECORDING|SKETCH.json ...]\n");
+      std::fprintf(stderr, "usage: hermite_rbf_quality [--stack FILE] [--out DIR] [--dense] [--measure] [name=value ...] [RECORDING|SKETCH.json ...]\n");
       return 2;
     } else {
       o.inputs.push_back(a);

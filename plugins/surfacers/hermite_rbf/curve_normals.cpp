@@ -11,6 +11,30 @@
 namespace sketchlab::hermite_rbf {
 namespace {
 
+// Curves cross at a node when two of them meet at more than 20°.
+const double min_crossing_sine = std::sin(20.0 * std::numbers::pi / 180.0);
+
+int cyclic_distance(int a, int b, int n, bool closed) {
+  const int d = std::abs(a - b);
+  return closed ? std::min(d, n - d) : d;
+}
+
+// v carried along the samples from `from` to `to` (forwards, across the seam
+// of a closed curve) by the rotation-minimising frame: each step turns it by
+// the smallest rotation taking one tangent to the next (Wang, Jüttler, Zheng
+// & Liu 2008, "Computation of rotation minimizing frames", the rotation
+// method), so a curve's bending does not count as disagreement.
+Vec3 transport(const CurveSamples& s, int from, int to, Vec3 v) {
+  const int n = static_cast<int>(s.points.size());
+  const int steps = to >= from ? to - from : to + n - from;
+  for (int k = 0; k < steps; ++k) {
+    const Vec3& a = s.tangents[static_cast<std::size_t>((from + k) % n)];
+    const Vec3& b = s.tangents[static_cast<std::size_t>((from + k + 1) % n)];
+    v = Eigen::Quaterniond::FromTwoVectors(a, b) * v;
+  }
+  return v;
+}
+
 Vec3 any_perpendicular(const Vec3& v) {
   const Vec3 axis = std::abs(v.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   return v.cross(axis).normalized();
@@ -161,6 +185,17 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
         pts.push_back(s.points[static_cast<std::size_t>(i)]);
       }
     }
+    // Curves that only continue each other there (a stroke and its mirror
+    // twin meeting at the mirror plane, say) share one tangent: the plane
+    // through their samples is their osculating plane, the Frenet frame §6
+    // warns against, not the surface's tangent plane. Only crossings count.
+    bool crossing = false;
+    for (std::size_t i = 0; i < x.at.size() && !crossing; ++i)
+      for (std::size_t j = i + 1; j < x.at.size() && !crossing; ++j)
+        crossing = curves[x.at[i].first].tangents[static_cast<std::size_t>(x.at[i].second)]
+                       .cross(curves[x.at[j].first].tangents[static_cast<std::size_t>(x.at[j].second)])
+                       .norm() >= min_crossing_sine;
+    if (!crossing) continue;
     const PrincipalAxes ax = principal_axes(pts);
     if (!(ax.spread[1] > 1e-6 * ax.spread[0])) continue;  // tangent curves: no plane
     Vec3 reference = Vec3::Zero(), exported_reference = Vec3::Zero();
@@ -183,13 +218,19 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
   std::vector<std::vector<std::pair<int, std::size_t>>> along(curves.size());  // (sample, crossing)
   for (std::size_t k = 0; k < crossings.size(); ++k)
     for (const auto& [c, i0] : crossings[k].at) along[c].emplace_back(i0, k);
-  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<Agreement> edges;
   for (std::size_t c = 0; c < curves.size(); ++c) {
     std::sort(along[c].begin(), along[c].end());
-    for (std::size_t i = 0; i + 1 < along[c].size(); ++i) edges.emplace_back(along[c][i].second, along[c][i + 1].second);
-    if (curves[c].closed && along[c].size() > 2) edges.emplace_back(along[c].back().second, along[c].front().second);
+    auto link = [&](std::size_t i, std::size_t j) {
+      const auto [si, ki] = along[c][i];
+      const auto [sj, kj] = along[c][j];
+      const Vec3 carried = transport(curves[c], si, sj, crossings[ki].normal);
+      edges.push_back({ki, kj, carried.dot(crossings[kj].normal)});
+    };
+    for (std::size_t i = 0; i + 1 < along[c].size(); ++i) link(i, i + 1);
+    if (curves[c].closed && along[c].size() > 2) link(along[c].size() - 1, 0);
   }
-  {
+  if (params.network_rule) {
     std::vector<Vec3> normals, positions;
     std::vector<bool> fixed;
     for (const Crossing& x : crossings) normals.push_back(x.normal), positions.push_back(x.position), fixed.push_back(x.fixed);
@@ -207,7 +248,13 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
     if (exported[c] || along[c].empty()) continue;
     std::vector<NormalKey> keys;
     for (const auto& [i0, k] : along[c]) keys.push_back({i0, crossings[k].normal});
-    if (!curves[c].closed) {
+    if (!params.network_rule) {
+      // §6: the default keys stay wherever no intersection is near.
+      const int n = static_cast<int>(curves[c].points.size());
+      for (const NormalKey& d : defaults[c])
+        if (std::none_of(along[c].begin(), along[c].end(), [&](const auto& x) { return cyclic_distance(d.sample, x.first, n, curves[c].closed) <= w; }))
+          keys.push_back(d);
+    } else if (!curves[c].closed) {
       const int first = along[c].front().first, last = along[c].back().first;
       const bool flip_start = curves[c].normals[static_cast<std::size_t>(first)].dot(crossings[along[c].front().second].normal) < 0.0;
       const bool flip_end = curves[c].normals[static_cast<std::size_t>(last)].dot(crossings[along[c].back().second].normal) < 0.0;

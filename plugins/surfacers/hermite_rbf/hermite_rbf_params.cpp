@@ -36,6 +36,10 @@ std::vector<ParamSpec> hermite_rbf_param_specs() {
        "a curve is planar when no sample leaves its fitted plane by more than this × its length"},
       {"intersection_window", ParamType::integer, integer(d.normals.intersection_window), 2.0, 1000.0, {}, "",
        "samples each side of an intersection fitted by the plane giving its normal (§6: 10)"},
+      {"normal_rule", ParamType::choice, std::string("network"), {}, {}, {"network", "paper"}, "",
+       "network: intersection normals oriented consistently across the network and used along every curve "
+       "through them (the default rules only where a curve meets no other); paper: §6 as written (default "
+       "rules wherever no intersection is within intersection_window samples)"},
       {"regularizer", ParamType::real, d.solve.regularizer, 0.0, 1.0, {}, "",
        "λ added to the kernel matrix diagonal (normalised coordinates); raised ×100 if the "
        "factorisation fails; the value used is reported"},
@@ -84,6 +88,7 @@ HermiteRbfParams hermite_rbf_params(const Params& p) {
   r.sampling.normal_change = p.real("normal_change");
   r.normals.planarity = p.real("planarity");
   r.normals.intersection_window = static_cast<int>(p.integer("intersection_window"));
+  r.normals.network_rule = p.string("normal_rule") == "network";
   r.solve.regularizer = p.real("regularizer");
   r.solver = p.string("solver") == "dense" ? Solver::dense : Solver::partition;
   r.partition.max_rows = static_cast<int>(p.integer("pu_max_rows"));

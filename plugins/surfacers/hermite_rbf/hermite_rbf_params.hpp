@@ -24,6 +24,11 @@ struct SamplingParams {
 struct NormalParams {
   double planarity = 0.01;   // a curve is planar when it leaves its fitted plane by <= this × its length
   int intersection_window = 10;  // samples each side fitted by the plane at an intersection
+  // network: intersection normals oriented across the network and used along
+  // every curve through them (default rules only away from intersections);
+  // paper: §6 as written (default keys wherever no intersection is within
+  // intersection_window samples, each curve oriented on its own).
+  bool network_rule = true;
 };
 
 struct SolveParams {
@@ -34,7 +39,7 @@ struct SolveParams {
 
 // The partition of unity of local fits (partition_cells.hpp).
 struct PartitionParams {
-  int max_rows = 160;     // a cell is split while its support holds more rows
+  int max_rows = 240;     // a cell is split while its support holds more rows
   int min_rows = 60;      // a leaf's support grows until it holds this many rows ...
   int min_normals = 4;    // ... and this many normal constraints
   double overlap = 1.5;   // support radius / cell half diagonal (Ohtake et al. 2003: 0.75 × diagonal)

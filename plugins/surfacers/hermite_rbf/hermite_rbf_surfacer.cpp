@@ -17,13 +17,6 @@
 #include "zero_set_mesh.hpp"
 
 namespace sketchlab::hermite_rbf {
-namespace {
-
-// The network's bounding region (surface_quality) is the curves' box grown by
-// this × its diagonal: a surface between curves bulges a little past them.
-constexpr double quality_margin = 0.02;
-
-}  // namespace
 SurfaceResult surface_from_constraints(const HermiteConstraints& input, const std::vector<Vec3>& curve_points,
                                        const HermiteRbfParams& params, SurfaceState* state) {
   SurfaceResult out;
@@ -147,6 +140,7 @@ SurfaceResult surface_from_constraints(const HermiteConstraints& input, const st
   s["watertight"] = topo.watertight_manifold() ? 1.0 : 0.0;
   s["far_area_fraction"] = quality.area > 0.0 ? far_area / quality.area : 0.0;
   s["trimmed_area_fraction"] = area_closed > 0.0 ? std::max(0.0, 1.0 - quality.area / area_closed) : 0.0;
+  s["diagonal"] = diagonal;
   s["area"] = quality.area;
   s["curve_distance_mean"] = quality.distance_mean;
   s["curve_distance_p95"] = quality.distance_p95;

@@ -7,13 +7,12 @@
 namespace sketchlab::hermite_rbf {
 
 std::vector<bool> consistent_flips(const std::vector<Vec3>& normals, const std::vector<Vec3>& positions,
-                                   const std::vector<std::pair<std::size_t, std::size_t>>& edges, const std::vector<bool>& fixed) {
+                                   const std::vector<Agreement>& agreements, const std::vector<bool>& fixed) {
   const std::size_t n = normals.size();
   auto usable = [&](std::size_t i) { return normals[i].squaredNorm() > 0.5; };
   std::vector<std::vector<std::pair<std::size_t, double>>> next(n);
-  for (const auto& [a, b] : edges) {
+  for (const auto& [a, b, w] : agreements) {
     if (a == b || !usable(a) || !usable(b)) continue;
-    const double w = normals[a].dot(normals[b]);
     next[a].emplace_back(b, w);
     next[b].emplace_back(a, w);
   }

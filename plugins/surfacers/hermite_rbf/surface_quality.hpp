@@ -7,6 +7,11 @@
 
 namespace sketchlab::hermite_rbf {
 
+// The network's bounding region used by the surfacer's figures: the curves'
+// box grown by this × its diagonal (a surface between curves bulges a little
+// past them).
+constexpr double quality_margin = 0.02;
+
 struct SurfaceQuality {
   double area = 0.0;              // m²
   double distance_mean = 0.0;     // m, area-weighted mean distance from the surface to the nearest curve sample
