@@ -29,7 +29,8 @@ PluginDescriptor describe() {
   return surfacer_descriptor<HermiteRbfSurfacer>(
       "hermite_rbf", "1.0",
       "JustDrawIt §6 implicit surface: Hermite RBF (r³ + linear) through point, tangent and normal "
-      "constraints of the curves, meshed by flying edges (VTK); recomputed on request and at the end of a replay",
+      "constraints of the curves, as a partition of unity of local fits (or one dense solve), meshed by "
+      "flying edges (VTK) and trimmed where no curves enclose it; recomputed on request and at the end of a replay",
       hermite_rbf::hermite_rbf_param_specs());
 }
 
