@@ -13,7 +13,7 @@ packages=(
   # command line, tests
   libcli11-dev catch2
   # plugins and viewers
-  libcgal-dev libopenmesh-dev libnlopt-cxx-dev libtbb-dev
+  libcgal-dev libopenmesh-dev libnlopt-cxx-dev libtbb-dev libnanoflann-dev
   libvtk9-dev libopenmpi-dev libopenxr-dev libxi-dev
   # headless rendering and viewer tests (xdotool drives the real window)
   xvfb xauth xdotool

@@ -5,14 +5,34 @@
 #include <map>
 #include <numbers>
 
+#include "normal_orientation.hpp"
 #include "plane_fit.hpp"
 
 namespace sketchlab::hermite_rbf {
 namespace {
 
+// Curves cross at a node when two of them meet at more than 20°.
+const double min_crossing_sine = std::sin(20.0 * std::numbers::pi / 180.0);
+
 int cyclic_distance(int a, int b, int n, bool closed) {
   const int d = std::abs(a - b);
   return closed ? std::min(d, n - d) : d;
+}
+
+// v carried along the samples from `from` to `to` (forwards, across the seam
+// of a closed curve) by the rotation-minimising frame: each step turns it by
+// the smallest rotation taking one tangent to the next (Wang, Jüttler, Zheng
+// & Liu 2008, "Computation of rotation minimizing frames", the rotation
+// method), so a curve's bending does not count as disagreement.
+Vec3 transport(const CurveSamples& s, int from, int to, Vec3 v) {
+  const int n = static_cast<int>(s.points.size());
+  const int steps = to >= from ? to - from : to + n - from;
+  for (int k = 0; k < steps; ++k) {
+    const Vec3& a = s.tangents[static_cast<std::size_t>((from + k) % n)];
+    const Vec3& b = s.tangents[static_cast<std::size_t>((from + k + 1) % n)];
+    v = Eigen::Quaterniond::FromTwoVectors(a, b) * v;
+  }
+  return v;
 }
 
 Vec3 any_perpendicular(const Vec3& v) {
@@ -139,18 +159,23 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
   }
 
   // Intersections (§6): a plane fitted to the samples each side of the node
-  // on every curve through it; oriented like the curves' default normals.
-  const int w = params.intersection_window;
-  std::vector<std::vector<NormalKey>> crossing(curves.size());
-  for (const auto& [node_id, node] : network.nodes()) {
+  // on every curve through it, signed like the curves' normals there.
+  struct Crossing {
     std::vector<std::pair<std::size_t, int>> at;  // (curve index, sample)
+    Vec3 normal, position;
+    bool fixed = false;  // signed by exported normals
+  };
+  std::vector<Crossing> crossings;
+  const int w = params.intersection_window;
+  for (const auto& [node_id, node] : network.nodes()) {
+    Crossing x;
     for (const NodeIncidence& inc : node.incidences)
-      if (auto it = index.find(inc.curve); it != index.end()) at.emplace_back(it->second, nearest_sample(curves[it->second], inc.t));
-    std::sort(at.begin(), at.end());
-    at.erase(std::unique(at.begin(), at.end()), at.end());
-    if (at.size() < 2) continue;
+      if (auto it = index.find(inc.curve); it != index.end()) x.at.emplace_back(it->second, nearest_sample(curves[it->second], inc.t));
+    std::sort(x.at.begin(), x.at.end());
+    x.at.erase(std::unique(x.at.begin(), x.at.end()), x.at.end());
+    if (x.at.size() < 2) continue;
     std::vector<Vec3> pts;
-    for (const auto& [c, i0] : at) {
+    for (const auto& [c, i0] : x.at) {
       const CurveSamples& s = curves[c];
       const int n = static_cast<int>(s.points.size());
       for (int d = -w; d <= w; ++d) {
@@ -160,23 +185,83 @@ void assign_normals(std::vector<CurveSamples>& curves, const Network& network, c
         pts.push_back(s.points[static_cast<std::size_t>(i)]);
       }
     }
+    // Curves that only continue each other there (a stroke and its mirror
+    // twin meeting at the mirror plane, say) share one tangent: the plane
+    // through their samples is their osculating plane, the Frenet frame §6
+    // warns against, not the surface's tangent plane. Only crossings count.
+    bool crossing = false;
+    for (std::size_t i = 0; i < x.at.size() && !crossing; ++i)
+      for (std::size_t j = i + 1; j < x.at.size() && !crossing; ++j)
+        crossing = curves[x.at[i].first].tangents[static_cast<std::size_t>(x.at[i].second)]
+                       .cross(curves[x.at[j].first].tangents[static_cast<std::size_t>(x.at[j].second)])
+                       .norm() >= min_crossing_sine;
+    if (!crossing) continue;
     const PrincipalAxes ax = principal_axes(pts);
     if (!(ax.spread[1] > 1e-6 * ax.spread[0])) continue;  // tangent curves: no plane
-    Vec3 normal = ax.axes[2];
-    Vec3 reference = Vec3::Zero();
-    for (const auto& [c, i0] : at) reference += curves[c].normals[static_cast<std::size_t>(i0)];
-    if (reference.dot(normal) < 0.0) normal = -normal;
-    for (const auto& [c, i0] : at)
-      if (!exported[c]) crossing[c].push_back({i0, normal});
+    Vec3 reference = Vec3::Zero(), exported_reference = Vec3::Zero();
+    x.position = Vec3::Zero();
+    for (const auto& [c, i0] : x.at) {
+      const Vec3& n = curves[c].normals[static_cast<std::size_t>(i0)];
+      reference += n;
+      if (exported[c]) exported_reference += n, x.fixed = true;
+      x.position += curves[c].points[static_cast<std::size_t>(i0)];
+    }
+    x.position /= double(x.at.size());
+    x.normal = ax.axes[2];
+    if ((x.fixed ? exported_reference : reference).dot(x.normal) < 0.0) x.normal = -x.normal;
+    crossings.push_back(std::move(x));
   }
+
+  // One orientation across the network (normal_orientation.hpp): crossings
+  // next to each other along a curve are neighbours. Per-curve rules may
+  // disagree between neighbouring curves; the surface must not fold there.
+  std::vector<std::vector<std::pair<int, std::size_t>>> along(curves.size());  // (sample, crossing)
+  for (std::size_t k = 0; k < crossings.size(); ++k)
+    for (const auto& [c, i0] : crossings[k].at) along[c].emplace_back(i0, k);
+  std::vector<Agreement> edges;
   for (std::size_t c = 0; c < curves.size(); ++c) {
-    if (crossing[c].empty()) continue;
-    const int n = static_cast<int>(curves[c].points.size());
-    std::vector<NormalKey> keys = crossing[c];
-    for (const NormalKey& k : defaults[c]) {
-      bool near = false;
-      for (const NormalKey& x : crossing[c]) near = near || cyclic_distance(k.sample, x.sample, n, curves[c].closed) <= w;
-      if (!near) keys.push_back(k);
+    std::sort(along[c].begin(), along[c].end());
+    auto link = [&](std::size_t i, std::size_t j) {
+      const auto [si, ki] = along[c][i];
+      const auto [sj, kj] = along[c][j];
+      const Vec3 carried = transport(curves[c], si, sj, crossings[ki].normal);
+      edges.push_back({ki, kj, carried.dot(crossings[kj].normal)});
+    };
+    for (std::size_t i = 0; i + 1 < along[c].size(); ++i) link(i, i + 1);
+    if (curves[c].closed && along[c].size() > 2) link(along[c].size() - 1, 0);
+  }
+  if (params.network_rule) {
+    std::vector<Vec3> normals, positions;
+    std::vector<bool> fixed;
+    for (const Crossing& x : crossings) normals.push_back(x.normal), positions.push_back(x.position), fixed.push_back(x.fixed);
+    const std::vector<bool> flip = consistent_flips(normals, positions, edges, fixed);
+    for (std::size_t k = 0; k < crossings.size(); ++k)
+      if (flip[k]) crossings[k].normal = -crossings[k].normal;
+  }
+
+  // A curve through crossings takes their normals (the curves around them
+  // say what the surface does there; the per-curve rules only guess); the
+  // default keys remain beyond its first and last crossing (a dangling end),
+  // signed like the crossing they continue. Curves without crossings keep
+  // the default rules.
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    if (exported[c] || along[c].empty()) continue;
+    std::vector<NormalKey> keys;
+    for (const auto& [i0, k] : along[c]) keys.push_back({i0, crossings[k].normal});
+    if (!params.network_rule) {
+      // §6: the default keys stay wherever no intersection is near.
+      const int n = static_cast<int>(curves[c].points.size());
+      for (const NormalKey& d : defaults[c])
+        if (std::none_of(along[c].begin(), along[c].end(), [&](const auto& x) { return cyclic_distance(d.sample, x.first, n, curves[c].closed) <= w; }))
+          keys.push_back(d);
+    } else if (!curves[c].closed) {
+      const int first = along[c].front().first, last = along[c].back().first;
+      const bool flip_start = curves[c].normals[static_cast<std::size_t>(first)].dot(crossings[along[c].front().second].normal) < 0.0;
+      const bool flip_end = curves[c].normals[static_cast<std::size_t>(last)].dot(crossings[along[c].back().second].normal) < 0.0;
+      for (const NormalKey& d : defaults[c]) {
+        if (d.sample < first - w) keys.push_back({d.sample, flip_start ? -d.normal : d.normal});
+        if (d.sample > last + w) keys.push_back({d.sample, flip_end ? -d.normal : d.normal});
+      }
     }
     propagate_normals(curves[c], std::move(keys));
   }

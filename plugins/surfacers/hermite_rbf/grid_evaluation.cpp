@@ -15,7 +15,13 @@ enum : std::uint8_t { unknown = 0, interpolated = 1, exact = 2, scheduled = 3 };
 }  // namespace
 
 GridSpec grid_around(const Box3& box, double padding, int resolution) {
-  const Vec3 lo = box.min() - Vec3::Constant(padding), hi = box.max() + Vec3::Constant(padding);
+  Vec3 lo = box.min() - Vec3::Constant(padding), hi = box.max() + Vec3::Constant(padding);
+  // Rounded outwards to multiples of a power of two near diagonal / 32.
+  const double quantum = std::exp2(std::floor(std::log2(std::max((hi - lo).norm(), 1e-9) / 32.0)));
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::floor(lo[a] / quantum) * quantum;
+    hi[a] = std::ceil(hi[a] / quantum) * quantum;
+  }
   const Vec3 extent = hi - lo;
   GridSpec g;
   g.h = extent.maxCoeff() / std::max(1, resolution);
@@ -31,7 +37,35 @@ GridSpec grid_around(const Box3& box, double padding, int resolution) {
   return g;
 }
 
-ScalarGrid evaluate_grid(const HermiteInterpolant& f, const GridSpec& spec, int threads) {
+void GridCache::invalidate(const std::vector<Sphere>& changed) {
+  if (known.empty()) return;
+  for (const Sphere& s : changed) {
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      const auto n = spec.n[static_cast<std::size_t>(a)];
+      lo[a] = std::clamp(static_cast<int>(std::floor((s.center[a] - s.radius - spec.origin[a]) / spec.h)), 0, n - 1);
+      hi[a] = std::clamp(static_cast<int>(std::ceil((s.center[a] + s.radius - spec.origin[a]) / spec.h)), 0, n - 1);
+    }
+    const double r2 = s.radius * s.radius * (1.0 + 1e-9);
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i)
+          if ((spec.origin + spec.h * Vec3(i, j, k) - s.center).squaredNorm() <= r2) known[spec.index(i, j, k)] = 0;
+  }
+}
+
+Box3 grid_box(const GridSpec& spec) {
+  return Box3(spec.origin, spec.origin + spec.h * Vec3(spec.n[0] - 1, spec.n[1] - 1, spec.n[2] - 1));
+}
+
+ScalarGrid evaluate_grid(const ImplicitFunction& f, const GridSpec& spec, int threads, GridCache* cache) {
+  if (cache && (cache->spec.origin != spec.origin || cache->spec.h != spec.h || cache->spec.n != spec.n ||
+                cache->known.size() != spec.size())) {
+    cache->spec = spec;
+    cache->values.assign(spec.size(), 0.0);
+    cache->gradient_norms.assign(spec.size(), 0.0f);
+    cache->known.assign(spec.size(), 0);
+  }
   ScalarGrid grid;
   grid.spec = spec;
   grid.values.assign(spec.size(), 0.0);
@@ -56,6 +90,19 @@ ScalarGrid evaluate_grid(const HermiteInterpolant& f, const GridSpec& spec, int 
         todo.push_back({i, j, k});
       }
     const bool gradients = step > 1;
+    const std::uint8_t needed = gradients ? 2 : 1;
+    if (cache) {
+      // Known nodes come from the cache; the rest are evaluated below.
+      std::erase_if(todo, [&](const std::array<int, 3>& t) {
+        const std::size_t id = spec.index(t[0], t[1], t[2]);
+        if (cache->known[id] < needed) return false;
+        grid.values[id] = cache->values[id];
+        gnorm[id] = cache->gradient_norms[id];
+        flag[id] = exact;
+        ++grid.evaluated;
+        return true;
+      });
+    }
     parallel_for(todo.size(), threads, [&](std::size_t t) {
       const auto& [i, j, k] = todo[t];
       const std::size_t id = spec.index(i, j, k);
@@ -67,6 +114,14 @@ ScalarGrid evaluate_grid(const HermiteInterpolant& f, const GridSpec& spec, int 
         grid.values[id] = f.value(node(i, j, k));
       }
     });
+    if (cache)
+      for (const auto& t : todo) {
+        const std::size_t id = spec.index(t[0], t[1], t[2]);
+        cache->values[id] = grid.values[id];
+        cache->gradient_norms[id] = gnorm[id];
+        cache->known[id] = needed;
+      }
+    grid.computed += todo.size();
     for (const auto& t : todo) flag[spec.index(t[0], t[1], t[2])] = exact;
     grid.evaluated += todo.size();
     if (step == 1) break;

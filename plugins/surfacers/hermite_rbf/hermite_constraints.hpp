@@ -27,10 +27,25 @@ struct HermiteConstraints {
 // already makes ∇f·t = 0, and the repeated row would make the system singular).
 void pick_constraints(const CurveSamples& samples, const SamplingParams& params, HermiteConstraints& out);
 
-// Removes constraints that duplicate a kept one within `radius` metres
-// (curves crossing at a node sample the same spot): points near a kept point,
-// normals near a kept normal, tangents near a kept normal or near a kept
-// tangent of nearly the same direction (|dot| > 0.9). Keeps the first in order.
+// Merges constraints that duplicate a kept one within `radius` metres
+// (curves crossing at a node sample the same spot). Constraints at one
+// position form a site (a point, its normal or tangents); in order, a site
+// closer than `radius` to a kept site is merged into the earliest one: the kept
+// site gains its point, its normal if it had none, its tangents unless
+// nearly parallel (|dot| > 0.9) to one already there; tangents are dropped
+// where a normal is. Derivative constraints thus stay on a point constraint,
+// which the partition of unity needs to meet them exactly.
 HermiteConstraints merge_duplicates(const HermiteConstraints& in, double radius);
+
+// The constraints of each kind sorted by position, then direction: a
+// canonical order, so that a model fitted to them does not depend on the
+// order the curves were visited in (and an incremental update equals a fit
+// from scratch).
+HermiteConstraints canonical_order(HermiteConstraints constraints);
+
+// Throws std::invalid_argument naming the problem when no surface can be
+// fitted: no normal constraint, fewer than 3 points, a non-finite position,
+// or every constraint on one straight line.
+void check_constraints(const HermiteConstraints& constraints);
 
 }  // namespace sketchlab::hermite_rbf

@@ -14,11 +14,11 @@
 
 #include "hermite_constraints.hpp"
 #include "hermite_rbf_params.hpp"
+#include "implicit_function.hpp"
 
 namespace sketchlab::hermite_rbf {
 
-// Centres as separate arrays (normalised coordinates) so the evaluation loop
-// vectorises.
+// Centres as separate arrays (normalised coordinates).
 struct RbfCenters {
   std::vector<double> x, y, z;      // position
   std::vector<double> alpha;        // value coefficient
@@ -32,16 +32,19 @@ struct RbfCenters {
 
 // Evaluates in metres: f(x) = scale · f̂((x − origin) / scale), so f vanishes
 // on the constraint points and ∇f equals the normals there.
-struct HermiteInterpolant {
+struct HermiteInterpolant final : ImplicitFunction {
   RbfCenters centers;
   double a0 = 0.0;
   Vec3 a = Vec3::Zero();
   Vec3 origin = Vec3::Zero();  // m
-  double scale = 1.0;          // m (bounding-box diagonal of the constraints)
+  double scale = 1.0;          // m (the normalisation length, e.g. the constraints' bounding-box diagonal)
 
-  double value(const Vec3& x) const;
-  // f and ∇f together.
-  double value_gradient(const Vec3& x, Vec3& gradient) const;
+  double value(const Vec3& x) const override;
+  double value_gradient(const Vec3& x, Vec3& gradient) const override;
+
+ private:
+  template <bool gradient>
+  double evaluate(const Vec3& x, Vec3* g) const;
 };
 
 struct SolveReport {
@@ -54,16 +57,26 @@ struct SolveReport {
   double residual_point = 0.0, residual_normal = 0.0, residual_tangent = 0.0;
 };
 
-// Builds and solves the system: the polynomial is eliminated with a QR of P
-// (null-space method), leaving the symmetric positive definite Qᵀ(A + λI)Q
-// (φ = r³ is conditionally positive definite of order 2), factored with
-// Cholesky (LLT); λ is multiplied by 100 until the factorisation succeeds.
-// Throws std::invalid_argument on degenerate input (no normal constraint,
-// fewer than 3 distinct points, collinear points).
+// The exact global fit: every constraint in one dense system, in coordinates
+// normalised to the constraints' bounding box (centre, diagonal). O(m²)
+// memory and O(m³) time for m rows; the reference the partition of unity is
+// tested against. Throws std::invalid_argument on degenerate input (no normal
+// constraint, fewer than 3 distinct points, collinear points).
 HermiteInterpolant fit_hermite_rbf(const HermiteConstraints& constraints, const SolveParams& params,
                                    SolveReport& report);
 
-// Fills the residual fields of `report`.
-void measure_residuals(const HermiteInterpolant& f, const HermiteConstraints& constraints, SolveReport& report);
+// Builds and solves the system in coordinates (x − origin) / scale: the
+// polynomial is eliminated with a QR of P (null-space method), leaving the
+// symmetric positive definite Qᵀ(A + λI)Q (φ = r³ is conditionally positive
+// definite of order 2), factored with Cholesky (LLT); λ is multiplied by 100
+// until the factorisation succeeds. A rank-deficient P (constraints on a line
+// or a plane) is handled by the rank-revealing QR. No input validation beyond
+// "at least one row left after the polynomial" (std::invalid_argument);
+// std::runtime_error when the system stays singular. Does not fill residuals.
+HermiteInterpolant solve_hermite_rbf(const HermiteConstraints& constraints, const Vec3& origin, double scale,
+                                     const SolveParams& params, SolveReport& report);
+
+// Fills the residual fields of `report` with f's violations of `constraints`.
+void measure_residuals(const ImplicitFunction& f, const HermiteConstraints& constraints, SolveReport& report);
 
 }  // namespace sketchlab::hermite_rbf

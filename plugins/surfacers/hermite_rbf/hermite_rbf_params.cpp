@@ -1,6 +1,15 @@
 #include "hermite_rbf_params.hpp"
 
+#include <cmath>
+#include <numbers>
+#include <string>
+
 namespace sketchlab::hermite_rbf {
+namespace {
+
+double degrees(double radians) { return std::round(radians * 180.0 / std::numbers::pi * 1e6) / 1e6; }
+
+}  // namespace
 
 std::vector<ParamSpec> hermite_rbf_param_specs() {
   const HermiteRbfParams d;
@@ -27,9 +36,24 @@ std::vector<ParamSpec> hermite_rbf_param_specs() {
        "a curve is planar when no sample leaves its fitted plane by more than this × its length"},
       {"intersection_window", ParamType::integer, integer(d.normals.intersection_window), 2.0, 1000.0, {}, "",
        "samples each side of an intersection fitted by the plane giving its normal (§6: 10)"},
+      {"normal_rule", ParamType::choice, std::string("network"), {}, {}, {"network", "paper"}, "",
+       "network: intersection normals oriented consistently across the network and used along every curve "
+       "through them (the default rules only where a curve meets no other); paper: §6 as written (default "
+       "rules wherever no intersection is within intersection_window samples)"},
       {"regularizer", ParamType::real, d.solve.regularizer, 0.0, 1.0, {}, "",
        "λ added to the kernel matrix diagonal (normalised coordinates); raised ×100 if the "
        "factorisation fails; the value used is reported"},
+      {"solver", ParamType::choice, std::string("partition"), {}, {}, {"partition", "dense"}, "",
+       "partition: local Hermite RBF fits blended by a partition of unity (Ohtake et al. 2003; linear "
+       "memory and time); dense: one global system (exact, cubic time; the reference)"},
+      {"pu_max_rows", ParamType::integer, integer(d.partition.max_rows), 20.0, 5000.0, {}, "",
+       "partition of unity: a cell is split while its support holds more rows than this"},
+      {"pu_min_rows", ParamType::integer, integer(d.partition.min_rows), 5.0, 5000.0, {}, "",
+       "partition of unity: a leaf's support grows until it holds this many rows"},
+      {"pu_min_normals", ParamType::integer, integer(d.partition.min_normals), 1.0, 1000.0, {}, "",
+       "partition of unity: ... and this many normal constraints"},
+      {"pu_overlap", ParamType::real, d.partition.overlap, 1.0, 4.0, {}, "",
+       "partition of unity: support radius / cell half diagonal (Ohtake et al. 2003: 1.5)"},
       {"resolution", ParamType::integer, integer(d.mesh.resolution), 8.0, 1024.0, {}, "",
        "marching-cubes grid cells along the longest side of the box"},
       {"padding", ParamType::real, d.mesh.padding, 0.0, 10.0, {}, "",
@@ -37,8 +61,16 @@ std::vector<ParamSpec> hermite_rbf_param_specs() {
       {"far_distance", ParamType::real, d.mesh.far_distance, 0.0, 10.0, {}, "",
        "surface farther than this × the bounding-box diagonal from every curve sample is 'far' "
        "(reported as far_area_fraction)"},
-      {"trim_far_components", ParamType::boolean, d.mesh.trim_far_components, {}, {}, {}, "",
-       "drop closed components of the zero set with no vertex near a curve (keeps the rest watertight)"},
+      {"trim", ParamType::choice, std::string("enclosed"), {}, {}, {"enclosed", "far_components", "none"}, "",
+       "enclosed: drop components far from the curves and cut the surface where no curves enclose it "
+       "(opens instead of ballooning); far_components: only drop those components (closed, watertight); "
+       "none: the whole zero set (JustDrawIt §6: watertight)"},
+      {"trim_reach", ParamType::real, d.mesh.trim_reach, 0.01, 10.0, {}, "",
+       "trim: curves within this × the bounding-box diagonal can enclose a surface point"},
+      {"trim_elevation", ParamType::real, degrees(d.mesh.trim_elevation), 1.0, 90.0, {}, "deg",
+       "trim: curves seen more steeply than this from a point's tangent plane do not enclose it"},
+      {"trim_gap", ParamType::real, degrees(d.mesh.trim_gap), 10.0, 360.0, {}, "deg",
+       "trim: a point is enclosed when no angle around its normal wider than this is free of curves"},
       {"threads", ParamType::integer, integer(d.mesh.threads), 0.0, 256.0, {}, "",
        "grid evaluation threads (0: one per core)"},
   };
@@ -56,11 +88,21 @@ HermiteRbfParams hermite_rbf_params(const Params& p) {
   r.sampling.normal_change = p.real("normal_change");
   r.normals.planarity = p.real("planarity");
   r.normals.intersection_window = static_cast<int>(p.integer("intersection_window"));
+  r.normals.network_rule = p.string("normal_rule") == "network";
   r.solve.regularizer = p.real("regularizer");
+  r.solver = p.string("solver") == "dense" ? Solver::dense : Solver::partition;
+  r.partition.max_rows = static_cast<int>(p.integer("pu_max_rows"));
+  r.partition.min_rows = static_cast<int>(p.integer("pu_min_rows"));
+  r.partition.min_normals = static_cast<int>(p.integer("pu_min_normals"));
+  r.partition.overlap = p.real("pu_overlap");
   r.mesh.resolution = static_cast<int>(p.integer("resolution"));
   r.mesh.padding = p.real("padding");
   r.mesh.far_distance = p.real("far_distance");
-  r.mesh.trim_far_components = p.boolean("trim_far_components");
+  const std::string& trim = p.string("trim");
+  r.mesh.trim = trim == "none" ? Trim::none : trim == "far_components" ? Trim::far_components : Trim::enclosed;
+  r.mesh.trim_reach = p.real("trim_reach");
+  r.mesh.trim_elevation = p.real("trim_elevation") * std::numbers::pi / 180.0;
+  r.mesh.trim_gap = p.real("trim_gap") * std::numbers::pi / 180.0;
   r.mesh.threads = static_cast<int>(p.integer("threads"));
   return r;
 }

@@ -14,19 +14,23 @@ class HermiteRbfSurfacer : public Surfacer {
   explicit HermiteRbfSurfacer(const Params& p) : params_(hermite_rbf::hermite_rbf_params(p)) {}
   SurfaceUpdate update(const Sketch&, const Edit&) override { return {}; }
   SurfaceUpdate command(const Sketch& sketch, const SurfaceCommand& command) override {
-    return hermite_rbf::surface_command(sketch, command, params_);
+    return hermite_rbf::surface_command(sketch, command, params_, &state_);
   }
-  SurfaceUpdate recompute(const Sketch& sketch) override { return hermite_rbf::recompute_surface(sketch, params_); }
+  SurfaceUpdate recompute(const Sketch& sketch) override {
+    return hermite_rbf::recompute_surface(sketch, params_, &state_);
+  }
 
  private:
   hermite_rbf::HermiteRbfParams params_;
+  hermite_rbf::SurfaceState state_;  // the previous surface's model: the next recompute updates what changed
 };
 
 PluginDescriptor describe() {
   return surfacer_descriptor<HermiteRbfSurfacer>(
       "hermite_rbf", "1.0",
       "JustDrawIt §6 implicit surface: Hermite RBF (r³ + linear) through point, tangent and normal "
-      "constraints of the curves, meshed by flying edges (VTK); recomputed on request and at the end of a replay",
+      "constraints of the curves, as a partition of unity of local fits (or one dense solve), meshed by "
+      "flying edges (VTK) and trimmed where no curves enclose it; recomputed on request and at the end of a replay",
       hermite_rbf::hermite_rbf_param_specs());
 }
 

@@ -1,18 +1,15 @@
 #include "zero_set_mesh.hpp"
 
-#include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkDoubleArray.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "vtk_mesh.hpp"
 
 namespace sketchlab::hermite_rbf {
 
@@ -37,27 +34,7 @@ Mesh extract_zero_set(const ScalarGrid& grid) {
   contour->ComputeScalarsOff();
   contour->InterpolateAttributesOff();
   contour->Update();
-  vtkPolyData* out = contour->GetOutput();
-
-  Mesh mesh;
-  if (vtkPoints* pts = out->GetPoints()) {
-    mesh.vertices.resize(static_cast<std::size_t>(pts->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i) {
-      double p[3];
-      pts->GetPoint(i, p);
-      mesh.vertices[static_cast<std::size_t>(i)] = Vec3(p[0], p[1], p[2]);
-    }
-  }
-  auto it = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    if (n != 3) continue;
-    std::array<int, 3> f{static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2])};
-    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-    mesh.faces.push_back(f);
-  }
+  Mesh mesh = mesh_from_polydata(contour->GetOutput());
 
   // Orientation: the grid's finite-difference gradient (f rises outwards)
   // decides; flying edges orients every triangle alike, so one vote suffices.
@@ -89,13 +66,7 @@ Mesh extract_zero_set(const ScalarGrid& grid) {
   if (vote < 0.0)
     for (auto& f : mesh.faces) std::swap(f[1], f[2]);
 
-  mesh.normals.assign(mesh.vertices.size(), Vec3::Zero());
-  for (const auto& f : mesh.faces) {
-    const Vec3 n = (mesh.vertices[static_cast<std::size_t>(f[1])] - mesh.vertices[static_cast<std::size_t>(f[0])])
-                       .cross(mesh.vertices[static_cast<std::size_t>(f[2])] - mesh.vertices[static_cast<std::size_t>(f[0])]);
-    for (int v : f) mesh.normals[static_cast<std::size_t>(v)] += n;
-  }
-  for (Vec3& n : mesh.normals) n = n.norm() > 0.0 ? n.normalized() : Vec3::UnitZ();
+  compute_vertex_normals(mesh);
   return mesh;
 }
 

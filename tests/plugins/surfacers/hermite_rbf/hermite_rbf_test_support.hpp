@@ -28,6 +28,16 @@ inline Curve circle(const Vec3& c, double r, const Vec3& u, const Vec3& v, int K
   return curve;
 }
 
+// The first `arcs` of the K arcs of circle(c, r, u, v, K): an open arc from
+// c + r·u turning towards v.
+inline Curve arc(const Vec3& c, double r, const Vec3& u, const Vec3& v, int arcs, int K = 8) {
+  Curve curve = circle(c, r, u, v, K);
+  curve.control_points.resize(static_cast<std::size_t>(3 * arcs + 1));
+  curve.sharp.assign(static_cast<std::size_t>(arcs + 1), false);
+  curve.closed = false;
+  return curve;
+}
+
 inline NetworkCurve network_curve(CurveId id, Curve c, std::vector<CurveNormal> normals = {}) {
   NetworkCurve nc;
   nc.id = id;

@@ -12,9 +12,13 @@ using namespace sketchlab::hermite_rbf_test;
 
 namespace {
 
+// The closed zero set of §6 ("water-tight, manifold"): only components far
+// from every curve are dropped. The default trim (Trim::enclosed) is tested
+// in partition_of_unity_test.cpp.
 HermiteRbfParams test_params(int resolution = 64) {
   HermiteRbfParams p;
   p.mesh.resolution = resolution;
+  p.mesh.trim = Trim::far_components;
   p.mesh.threads = 2;
   return p;
 }
