@@ -22,6 +22,7 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   soapfilm::ReplayFigures replay;
   int sessions = 0, patch_sessions = 0;
   for (const auto& f : std::filesystem::directory_iterator(dir / "sketch_history")) {
+    if (f.path().extension() != ".json") continue;  // the folder's README
     const std::string name = f.path().stem().string();
     INFO(name);
     const soapfilm::CassieSession session = soapfilm::load_cassie_session(dir, name);
