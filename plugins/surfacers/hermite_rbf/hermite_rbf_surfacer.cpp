@@ -10,6 +10,7 @@
 #include "mesh_topology.hpp"
 #include "parallel_for.hpp"
 #include "point_buckets.hpp"
+#include "sketchlab/plugin/budget.hpp"
 #include "zero_set_mesh.hpp"
 
 namespace sketchlab::hermite_rbf {
@@ -124,6 +125,7 @@ SurfaceResult surface_from_network(const Network& network, const HermiteRbfParam
     spacing = std::min(spacing, c.spacing);
   }
   const HermiteConstraints merged = merge_duplicates(picked, 0.5 * spacing);
+  check_budget();  // issue 17: the per-event time budget
   const double constraints_ms = ms_since(start);
   SurfaceResult r = surface_from_constraints(merged, samples, params);
   r.stats["curves"] = double(curves.size());
