@@ -35,7 +35,8 @@ namespace sketchlab {
 // 2: Surfacer::recompute and RecomputeSurfaceEvent.
 // 3: Stroke::draw_plane and Corrector::stroke_space.
 // 4: the per-event time budget (budget.hpp): BudgetExceeded crosses the
-//    boundary and the wrappers below turn it into the call's error.
+//    boundary and the wrappers below turn it into the call's error;
+//    Input::request_stop.
 inline constexpr std::uint32_t plugin_abi_version = 4;
 
 enum class PluginKind { corrector, surfacer, input };
@@ -120,6 +121,15 @@ class GuardedInput final : public T {
       error_ = "unknown exception";
     }
     return std::nullopt;
+  }
+  void request_stop() override {
+    try {
+      T::request_stop();
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    } catch (...) {
+      error_ = "unknown exception";
+    }
   }
   bool finished() const override { return !error_.empty() || T::finished(); }
   std::string error() const override { return error_.empty() ? T::error() : error_; }
