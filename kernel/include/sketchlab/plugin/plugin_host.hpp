@@ -17,7 +17,7 @@
 // with its rights, and so does every plugin call. PluginLoadOptions::probe
 // runs the load-time code in a child process first, so a library that
 // crashes or hangs while loading is reported instead of taking the host down;
-// it is no sandbox for malicious code (plugins/README section "Trust").
+// it is no sandbox for malicious code (README.md, "Broken and untrusted plugin files").
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -47,7 +47,8 @@ struct PluginError : std::runtime_error {
 
 struct PluginLoadOptions {
   // Load every library once in a forked child before loading it here (one
-  // fork + dlopen per library; see plugin_probe in the README).
+  // fork + dlopen per library; see README.md, "Broken and untrusted plugin
+  // files").
   bool probe = false;
   std::chrono::milliseconds probe_timeout{10000};
   // probe = true when the environment sets SKETCHLAB_PLUGIN_PROBE=1.
