@@ -19,6 +19,10 @@ constexpr int child_dlopen_failed = 88;
 constexpr int child_no_entry = 89;
 
 [[noreturn]] void run_child(const char* file, const char* entry_symbol) {
+  // A crash ends the child with its own signal, not through the handlers it
+  // inherited from the host (a sanitizer's report then abort(), a test
+  // framework's failure report, the host's stop handlers).
+  for (const int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGINT, SIGTERM}) ::signal(sig, SIG_DFL);
   void* handle = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);
   if (!handle) ::_exit(child_dlopen_failed);
   using Entry = const void* (*)();
