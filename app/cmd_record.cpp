@@ -1,18 +1,23 @@
 // `sketchlab record --input NAME [--param k=v ...] -o FILE`: runs an input
-// plugin to its end and writes what it produced as a recording.
+// plugin to its end and writes what it produced as a recording, each event as
+// it comes. Live inputs (openxr) are polled until they end; Ctrl-C or
+// SIGTERM asks them to finish what is in progress and stops cleanly.
 // `sketchlab synth MODEL [-o FILE] [--modality vr|tablet] [--noise X]
 // [--seed N] [--param k=v ...]`: the same with the synthetic input (MODEL is
 // a built-in model name, or an .off/.ply mesh whose feature curves to draw).
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 #include "commands.hpp"
 #include "plugin_arguments.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
+#include "sketchlab/run/stop_signals.hpp"
 
 namespace sketchlab::cli {
 namespace {
@@ -34,8 +39,12 @@ struct SynthOptions {
   bool overwrite = false;
 };
 
-// Runs the input to its end, writing each event as it comes. Returns the
-// number of events written.
+// What a stopped input may still deliver (the stroke it was drawing) before
+// the recording is closed without it.
+constexpr std::chrono::seconds stop_grace{2};
+
+// Runs the input to its end (or until a stop signal), writing each event as
+// it comes. Returns the number of events written.
 std::size_t record(const std::string& input_name, const std::vector<std::string>& texts,
                    const std::map<std::string, ParamValue>& extra, const std::string& output,
                    bool overwrite) {
@@ -50,13 +59,28 @@ std::size_t record(const std::string& input_name, const std::vector<std::string>
     throw std::runtime_error(output + ": already exists; pass --overwrite to replace it");
   RecordingWriter writer(output, input->header(), overwrite);
   std::size_t events = 0;
+  const StopSignals signals;
+  std::optional<std::chrono::steady_clock::time_point> stop_by;
+  bool live = false;
   while (!input->finished()) {
+    if (StopSignals::stop_requested() && !stop_by) {
+      std::cerr << "sketchlab record: stopping (signal " << StopSignals::received() << ")\n";
+      input->request_stop();
+      stop_by = std::chrono::steady_clock::now() + stop_grace;
+    }
+    if (stop_by && std::chrono::steady_clock::now() > *stop_by) break;
     auto event = input->next();
     if (!event) {
-      if (input->finished()) break;
-      throw std::runtime_error("input '" + input_name +
-                               "' is live (has no event ready and is not finished); record "
-                               "reads inputs that end");
+      if (input->finished()) continue;
+      if (!live) {
+        live = true;
+        std::cerr << "sketchlab record: recording input '" << input_name << "' to " << output
+                  << " (Ctrl-C stops)\n";
+      }
+      // A live input with nothing ready: it paces itself, this only keeps
+      // one that does not from spinning.
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      continue;
     }
     writer.append(*event);
     ++events;

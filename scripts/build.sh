@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Configures and builds sketchlab in build/ (Release) or, with --sanitize, in
-# build-asan/ (ASan + UBSan, no viewers, kernel tests only).
+# build-asan/ (ASan + UBSan: the kernel, every plugin, the CLI and the whole
+# test suite; no benchmarks, and no viewers, whose VTK/OpenGL stack is not
+# built with the sanitizers and whose tests need a display).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dir="$root/build"
@@ -9,8 +11,11 @@ targets=(all)
 if [ "${1:-}" = "--sanitize" ]; then
   shift
   dir="$root/build-asan"
-  args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKETCHLAB_SANITIZE=ON -DSKETCHLAB_BUILD_VIEWERS=OFF -DSKETCHLAB_BUILD_BENCH=OFF)
-  targets=(sketchlab_kernel_tests)
+  # -O1 -g1 (line tables: file:line in the sanitizers' reports) compiles the
+  # instrumented code 2.6x faster than -O2 -g (json_codec.cpp: 47 s against
+  # 121 s of CPU), which keeps the whole suite's sanitizer build within CI.
+  args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
+        -DSKETCHLAB_SANITIZE=ON -DSKETCHLAB_BUILD_VIEWERS=OFF -DSKETCHLAB_BUILD_BENCH=OFF)
 fi
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)

@@ -19,6 +19,8 @@ packages=(
   xvfb xauth xdotool
   # shared compiler cache between build directories
   ccache
+  # libFuzzer harnesses (fuzz/, scripts/fuzz.sh): clang with its runtimes
+  clang libclang-rt-14-dev
 )
 
 missing=()

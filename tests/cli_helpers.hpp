@@ -2,11 +2,15 @@
 // Running the `sketchlab` binary from tests (SKETCHLAB_CLI is set by
 // tests/CMakeLists.txt) in scratch folders of the build tree.
 #include <catch2/catch.hpp>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "test_paths.hpp"
@@ -43,6 +47,45 @@ inline CliRun run_captured(const std::string& command) {
   while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
   const int status = pclose(pipe);
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// Runs `command` ("VAR=value ... program args", no other shell syntax) in the
+// background through env(1), exec'd so that the signal reaches the program
+// itself, with its output in `log`; waits until `log` contains
+// `ready` (at most `timeout_s`), lets it run `delay_s` more, sends `signal`
+// and waits for the end.
+// status: the exit status, -1 when it did not exit normally (killed,
+// crashed) or never became ready (it is then killed).
+inline CliRun run_until_then_signal(const std::string& command, const std::filesystem::path& log,
+                                    const std::string& ready, int signal, double timeout_s = 60.0,
+                                    double delay_s = 0.0) {
+  CliRun r;
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const std::string line = "exec env " + command + " >" + log.string() + " 2>&1";
+    execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto read_log = [&] {
+    std::ifstream in(log);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  bool seen = false, ended = false;
+  int status = 0;
+  for (double waited = 0; waited < timeout_s && !seen && !ended; waited += 0.02) {
+    usleep(20000);
+    seen = read_log().find(ready) != std::string::npos;
+    ended = !seen && waitpid(pid, &status, WNOHANG) == pid;  // ended before being ready
+  }
+  if (!ended) {
+    if (seen) usleep(static_cast<useconds_t>(delay_s * 1e6));
+    kill(pid, seen ? signal : SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  r.output = read_log();
+  r.status = seen && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
 

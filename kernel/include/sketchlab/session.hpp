@@ -14,6 +14,7 @@
 
 #include "sketchlab/constraint.hpp"
 #include "sketchlab/event.hpp"
+#include "sketchlab/plugin/budget.hpp"
 #include "sketchlab/plugin/corrector.hpp"
 #include "sketchlab/plugin/surfacer.hpp"
 #include "sketchlab/preprocess/preprocess.hpp"
@@ -37,13 +38,26 @@ struct StepReport {
   std::string error;
 };
 
+// Strokes with more samples are refused (StepReport::error): 100 s of input
+// at 1 kHz, 500 times the longest bundled stroke. Some of the correctors'
+// stroke-sized passes grow faster than linearly with the sample count.
+inline constexpr std::size_t max_stroke_samples = 100000;
+
 class Session {
  public:
   // `corrector` must not be null; `surfacer` may be. Fallback fitting (used
   // when correction is toggled off) uses `fallback` preprocessing parameters.
+  // Each event gets `time_budget_s` seconds (> 0) of corrector and surfacer
+  // time (plugin/budget.hpp).
   Session(const Workspace& workspace, std::shared_ptr<Corrector> corrector,
-          std::shared_ptr<Surfacer> surfacer, PreprocessParams fallback = {});
+          std::shared_ptr<Surfacer> surfacer, PreprocessParams fallback = {},
+          double time_budget_s = default_time_budget_s);
 
+  // Never throws for anything a plugin or an event does: an invalid stroke, a
+  // camera that cannot map its pixels, a plugin error or exception, an
+  // exceeded time budget all become report.error, and the session goes on
+  // (a refused stroke's raw samples stay recorded when it reached the
+  // corrector).
   StepReport handle(const Event& event);
 
   // Takes back the last handled event, exactly: afterwards sketch(),
@@ -98,6 +112,7 @@ class Session {
   std::shared_ptr<Corrector> corrector_;
   std::shared_ptr<Surfacer> surfacer_;
   PreprocessParams fallback_;
+  double time_budget_s_;
   std::map<std::string, std::map<StrokeId, Curve>> references_;
   std::map<std::string, std::vector<RelationEvent>> relations_;
 };

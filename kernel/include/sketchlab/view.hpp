@@ -2,6 +2,8 @@
 // A camera for 2D input: OpenGL-style view and projection matrices plus the
 // viewport in pixels. Pixel coordinates have their origin at the viewport's
 // bottom-left corner (OpenGL window coordinates).
+#include <string>
+
 #include "sketchlab/types.hpp"
 
 namespace sketchlab {
@@ -27,7 +29,14 @@ struct Ray {
 // get a negative depth.
 Vec3 world_to_pixel(const View& view, const Vec3& world);
 
-// Pixel -> world-space ray through that pixel (from the near plane).
+// Empty when pixels of `view` can be turned into rays (a finite viewport of
+// positive size, a finite and invertible projection * view), else the
+// reason, e.g. "its camera (projection * view) is not invertible".
+std::string view_problem(const View& view);
+
+// Pixel -> world-space ray through that pixel (from the near plane). Throws
+// std::invalid_argument for a view with a view_problem() or a non-finite
+// pixel.
 Ray pixel_to_ray(const View& view, const Vec2& pixel);
 
 // The eye position in world coordinates.

@@ -12,8 +12,22 @@ namespace sketchlab::config_detail {
 
 // Applies each override to `root` in order. A path into a missing map key
 // creates it (and maps on the way); a list step must be an existing index.
-// Throws ConfigError naming the override.
+// Throws ConfigError naming the override and where it was given.
 void apply_overrides(YAML::Node& root, const std::vector<Override>& overrides);
+
+// "a.b.0.c" -> {"a", "b", "0", "c"} (segments trimmed). Throws
+// std::invalid_argument for an empty key or an empty segment.
+std::vector<std::string> split_key_path(const std::string& key);
+
+// The YAML tree of a config file (an empty map for an empty file). Throws
+// ConfigError "file: cannot read" or "file:line: invalid YAML: ...".
+YAML::Node load_yaml(const std::filesystem::path& file);
+
+// Stack `index` of the experiment tree `root` (read from `file`) after
+// `overrides`, validated as load_experiment validates it; its name is left
+// as written (possibly empty). `root` is not modified.
+StackConfig read_experiment_stack(const YAML::Node& root, const std::filesystem::path& file,
+                                  const std::vector<Override>& overrides, std::size_t index);
 
 // True when `name` matches `pattern` ('*' any run, '?' one character; a
 // leading '.' in name must be matched literally, as in a shell).

@@ -15,7 +15,7 @@ namespace {
 
 using Path = std::vector<std::string>;
 
-const std::vector<std::string> stack_keys = {"name", "input", "corrector", "surfacer"};
+const std::vector<std::string> stack_keys = {"name", "input", "corrector", "surfacer", "time_budget"};
 const std::vector<std::string> plugin_keys = {"plugin", "params"};
 const std::vector<std::string> experiment_keys = {"experiment", "recordings", "stacks", "outputs",
                                                   "sweep"};
@@ -54,38 +54,30 @@ std::string describe_node(const YAML::Node& node) {
 class Reader {
  public:
   Reader(fs::path file, const std::vector<Override>& overrides)
-      : file_(std::move(file)), base_(fs::absolute(file_).parent_path()) {
-    for (const auto& o : overrides) overridden_.push_back(o.path);
-  }
+      : file_(std::move(file)), base_(fs::absolute(file_).parent_path()), overridden_(overrides) {}
 
   const fs::path& file() const { return file_; }
 
   YAML::Node load(const std::vector<Override>& overrides) const {
-    YAML::Node root;
-    try {
-      root = YAML::LoadFile(file_.string());
-    } catch (const YAML::BadFile&) {
-      throw ConfigError(file_.string() + ": cannot read the file");
-    } catch (const YAML::Exception& e) {
-      throw ConfigError(file_.string() + ":" + std::to_string(e.mark.line + 1) +
-                        ": invalid YAML: " + e.msg);
-    }
-    if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+    YAML::Node root = config_detail::load_yaml(file_);
     config_detail::apply_overrides(root, overrides);
     return root;
   }
 
-  // The command line when `path` (or a prefix of it) was overridden, else
-  // the node's line in the file.
+  // Where the override that set `path` (or a prefix of it) was given (the
+  // command line, a sweep entry), else the node's line in the file. The last
+  // override of a path is the one that counts.
   SourceLocation where(const YAML::Node& node, const Path& path) const {
-    for (const auto& o : overridden_) {
-      if (o.size() <= path.size() && std::equal(o.begin(), o.end(), path.begin())) return {};
+    for (auto o = overridden_.rbegin(); o != overridden_.rend(); ++o) {
+      if (o->path.size() <= path.size() && std::equal(o->path.begin(), o->path.end(), path.begin()))
+        return o->origin;
     }
     const int line = node.IsDefined() ? node.Mark().line : -1;
     if (line >= 0) return {file_.string(), line + 1};
     // No mark: a map an override created on its way, or an empty document.
-    for (const auto& o : overridden_) {
-      if (path.size() < o.size() && std::equal(path.begin(), path.end(), o.begin())) return {};
+    for (auto o = overridden_.rbegin(); o != overridden_.rend(); ++o) {
+      if (path.size() < o->path.size() && std::equal(path.begin(), path.end(), o->path.begin()))
+        return o->origin;
     }
     return {file_.string(), 0};
   }
@@ -203,6 +195,14 @@ class Reader {
     if (node["surfacer"]) {
       stack.surfacer = read_plugin(node["surfacer"], child(path, "surfacer"), "surfacer");
     }
+    if (node["time_budget"]) {
+      const YAML::Node& v = node["time_budget"];
+      const Path p = child(path, "time_budget");
+      const std::optional<double> seconds = v.IsScalar() ? parse_real(v.Scalar()) : std::nullopt;
+      if (!seconds || !(*seconds > 0.0 && *seconds <= 86400.0))
+        fail(v, p, dotted(p) + " must be a number of seconds in (0, 86400], not " + describe_node(v));
+      stack.time_budget = *seconds;
+    }
     return stack;
   }
 
@@ -236,7 +236,7 @@ class Reader {
 
   fs::path file_;
   fs::path base_;
-  std::vector<Path> overridden_;
+  std::vector<Override> overridden_;
 };
 
 // Stack names: explicit ones must be unique; the others take the corrector
@@ -315,8 +315,14 @@ std::vector<SweepAxis> read_sweep(const Reader& reader, const YAML::Node& sweep,
   for (const auto& entry : sweep) {
     const std::string key = entry.first.Scalar();
     SweepAxis axis;
-    axis.path = parse_override(key + "=x").path;
     axis.location = reader.where(entry.first, child(path, key));
+    try {
+      axis.path = config_detail::split_key_path(key);
+    } catch (const std::invalid_argument& e) {
+      reader.fail(entry.first, child(path, key),
+                  "sweep key '" + key + "' has " + e.what() + " (expected stacks.<index or *>.<path>, "
+                  "e.g. stacks.0.corrector.params.delta)");
+    }
     const auto& p = axis.path;
     bool index_ok = p.size() >= 3 && p[0] == "stacks";
     if (index_ok && p[1] != "*") {
@@ -335,6 +341,34 @@ std::vector<SweepAxis> read_sweep(const Reader& reader, const YAML::Node& sweep,
 }
 
 }  // namespace
+
+namespace config_detail {
+
+YAML::Node load_yaml(const fs::path& file) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file.string());
+  } catch (const YAML::BadFile&) {
+    throw ConfigError(file.string() + ": cannot read the file");
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(file.string() + ":" + std::to_string(e.mark.line + 1) + ": invalid YAML: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  return root;
+}
+
+StackConfig read_experiment_stack(const YAML::Node& root, const fs::path& file,
+                                  const std::vector<Override>& overrides, std::size_t index) {
+  const Reader reader(file, overrides);
+  YAML::Node tree = YAML::Clone(root);
+  apply_overrides(tree, overrides);
+  const YAML::Node stacks = tree["stacks"];
+  if (!stacks.IsSequence() || index >= stacks.size())
+    reader.fail(stacks, {"stacks"}, "'stacks' has no entry " + std::to_string(index));
+  return reader.read_stack(stacks[index], {"stacks", std::to_string(index)});
+}
+
+}  // namespace config_detail
 
 StackConfig load_stack(const fs::path& file, const std::vector<Override>& overrides) {
   const Reader reader(file, overrides);

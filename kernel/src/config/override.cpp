@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 
 #include "config_internal.hpp"
 
@@ -26,33 +27,39 @@ Override parse_override(const std::string& text) {
   if (eq == std::string::npos) {
     throw ConfigError("command line: override '" + text + "' has no '=' (expected key.path=value)");
   }
-  const std::string key = trim(text.substr(0, eq));
-  if (key.empty()) {
-    throw ConfigError("command line: override '" + text + "' has an empty key (expected key.path=value)");
-  }
   Override o;
   o.value = text.substr(eq + 1);
-  std::size_t start = 0;
-  while (true) {
-    const auto dot = key.find('.', start);
-    const std::string part = trim(key.substr(start, dot == std::string::npos ? dot : dot - start));
-    if (part.empty()) {
-      throw ConfigError("command line: override '" + text + "' has an empty key segment in '" +
-                        key + "'");
-    }
-    o.path.push_back(part);
-    if (dot == std::string::npos) break;
-    start = dot + 1;
+  try {
+    o.path = config_detail::split_key_path(text.substr(0, eq));
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError("command line: override '" + text + "' has " + e.what() +
+                      " (expected key.path=value)");
   }
   return o;
 }
 
 namespace config_detail {
 
+std::vector<std::string> split_key_path(const std::string& text) {
+  const std::string key = trim(text);
+  if (key.empty()) throw std::invalid_argument("an empty key");
+  std::vector<std::string> path;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = key.find('.', start);
+    const std::string part = trim(key.substr(start, dot == std::string::npos ? dot : dot - start));
+    if (part.empty()) throw std::invalid_argument("an empty key segment in '" + key + "'");
+    path.push_back(part);
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return path;
+}
+
 void apply_overrides(YAML::Node& root, const std::vector<Override>& overrides) {
   for (const auto& o : overrides) {
     auto fail = [&](const std::string& why) -> void {
-      throw ConfigError("command line: " + describe_override(o) + ": " + why);
+      throw ConfigError(o.origin.to_string() + ": " + describe_override(o) + ": " + why);
     };
     if (o.path.empty()) fail("empty key");
 

@@ -31,6 +31,7 @@ std::string stack_to_yaml(const StackConfig& stack) {
   if (stack.input) emit_choice(out, "input", *stack.input);
   emit_choice(out, "corrector", stack.corrector);
   if (stack.surfacer) emit_choice(out, "surfacer", *stack.surfacer);
+  if (stack.time_budget) out << YAML::Key << "time_budget" << YAML::Value << *stack.time_budget;
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }

@@ -1,6 +1,7 @@
+#include <sstream>
 #include <stdexcept>
 
-#include "sketchlab/config/config.hpp"
+#include "config_internal.hpp"
 
 namespace sketchlab {
 namespace {
@@ -18,11 +19,32 @@ std::string dotted(const std::vector<std::string>& path) {
 }  // namespace
 
 std::vector<SweepCase> expand_sweep(const ExperimentConfig& config) {
+  std::vector<std::vector<const SweepAxis*>> axes_of(config.stacks.size());
+  double points = 0.0;
+  for (std::size_t i = 0; i < config.stacks.size(); ++i) {
+    double product = 1.0;
+    for (const auto& a : config.sweep)
+      if (applies_to(a, i)) {
+        axes_of[i].push_back(&a);
+        product *= static_cast<double>(a.values.size());
+      }
+    points += product;
+  }
+  if (points > max_sweep_points) {
+    std::string where;
+    for (const auto& a : config.sweep) where += (where.empty() ? "" : ", ") + a.location.to_string();
+    std::ostringstream text;
+    text << "sweep entries at " << where << ": the sweep has " << points
+         << " stack variants in all; at most " << max_sweep_points << " are allowed";
+    throw ConfigError(text.str());
+  }
+
+  // The file is read once; each point only applies its values to a copy.
+  YAML::Node root;
+  if (!config.sweep.empty()) root = config_detail::load_yaml(config.file);
   std::vector<SweepCase> cases;
   for (std::size_t i = 0; i < config.stacks.size(); ++i) {
-    std::vector<const SweepAxis*> axes;
-    for (const auto& a : config.sweep)
-      if (applies_to(a, i)) axes.push_back(&a);
+    const auto& axes = axes_of[i];
     if (axes.empty()) {
       cases.push_back({config.stacks[i], {}});
       continue;
@@ -37,17 +59,11 @@ std::vector<SweepCase> expand_sweep(const ExperimentConfig& config) {
         std::vector<std::string> path = axes[k]->path;
         path[1] = std::to_string(i);
         const std::string& value = axes[k]->values[digit[k]];
-        overrides.push_back({path, value});
+        overrides.push_back({path, value, axes[k]->location});
         c.point.emplace_back(dotted(axes[k]->path), value);
         suffix += (suffix.empty() ? "@" : ",") + path.back() + "=" + value;
       }
-      try {
-        c.stack = load_experiment(config.file, overrides).stacks[i];
-      } catch (const ConfigError& e) {
-        std::string where;
-        for (const auto* a : axes) where += (where.empty() ? "" : ", ") + a->location.to_string();
-        throw ConfigError("sweep entry at " + where + ": " + e.what());
-      }
+      c.stack = config_detail::read_experiment_stack(root, config.file, overrides, i);
       c.stack.name = config.stacks[i].name + suffix;
       cases.push_back(std::move(c));
       std::size_t k = axes.size();

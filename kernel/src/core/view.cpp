@@ -28,6 +28,16 @@ Mat4 inverse_checked(const Mat4& m, const char* fn, const char* what) {
 
 }  // namespace
 
+std::string view_problem(const View& view) {
+  const Vec4& vp = view.viewport;
+  if (!vp.allFinite() || !(vp[2] > 0.0) || !(vp[3] > 0.0))
+    return "its viewport width and height must be finite and > 0";
+  const Mat4 m = view.projection * view.view;
+  if (!m.allFinite() || !Eigen::FullPivLU<Mat4>(m).isInvertible())
+    return "its camera (projection * view) is not invertible";
+  return {};
+}
+
 Vec3 world_to_pixel(const View& view, const Vec3& world) {
   check_viewport(view, "world_to_pixel");
   const Vec4 clip = view.projection * view.view * world.homogeneous();

@@ -1,7 +1,11 @@
 #include "sketchlab/io/sketch_json.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "recording/json_codec.hpp"
 #include "sketchlab/io/text_file.hpp"
@@ -79,11 +83,65 @@ const json& field(const json& j, const char* name, const std::string& what) {
   return j.at(name);
 }
 
+const json& list(const json& j, const char* name, const std::string& what) {
+  const json& v = field(j, name, what);
+  if (!v.is_array()) throw std::invalid_argument(what + "." + name + ": expected a list");
+  return v;
+}
+
+// An integer of type T, exactly. nlohmann keeps integer literals as int64 or
+// uint64 and everything else as double; converting a double (1.5, 1e300,
+// -1.5, 1.7e24) or an out-of-range integer to T would be undefined
+// behaviour (issue 17, D7), so those are errors naming the field.
+template <class T>
+T integer(const json& v, const std::string& what) {
+  constexpr auto lo = std::numeric_limits<T>::min();
+  constexpr auto hi = std::numeric_limits<T>::max();
+  const auto out_of_range = [&] {
+    return std::invalid_argument(what + ": expected an integer in [" + std::to_string(lo) + ", " +
+                                 std::to_string(hi) + "], got " + v.dump());
+  };
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(hi)) throw out_of_range();
+    return static_cast<T>(u);
+  }
+  if (v.is_number_integer()) {
+    const auto i = v.get<std::int64_t>();
+    if constexpr (std::is_unsigned_v<T>) {
+      if (i < 0) throw out_of_range();
+    } else {
+      if (i < static_cast<std::int64_t>(lo) || i > static_cast<std::int64_t>(hi)) throw out_of_range();
+    }
+    return static_cast<T>(i);
+  }
+  throw out_of_range();
+}
+
 template <class T>
 T number(const json& j, const char* name, const std::string& what) {
   const json& v = field(j, name, what);
-  if (!v.is_number()) throw std::invalid_argument(what + "." + name + ": expected a number");
-  return v.get<T>();
+  const std::string where = what + "." + name;
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!v.is_number()) throw std::invalid_argument(where + ": expected a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) throw std::invalid_argument(where + ": non-finite number");
+    return x;
+  } else {
+    return integer<T>(v, where);
+  }
+}
+
+std::string text(const json& j, const char* name, const std::string& what) {
+  const json& v = field(j, name, what);
+  if (!v.is_string()) throw std::invalid_argument(what + "." + name + ": expected a string");
+  return v.get<std::string>();
+}
+
+bool boolean(const json& j, const char* name, const std::string& what) {
+  const json& v = field(j, name, what);
+  if (!v.is_boolean()) throw std::invalid_argument(what + "." + name + ": expected true or false");
+  return v.get<bool>();
 }
 
 }  // namespace
@@ -145,55 +203,62 @@ std::string sketch_to_json(const Sketch& sketch, const std::vector<StepReport>* 
   return root.dump(1) + "\n";
 }
 
-Sketch read_sketch_json(const std::filesystem::path& file) {
-  const std::string name = file.string();
+Sketch parse_sketch_json(std::string_view text_in, const std::string& name) {
   try {
-    const json root = json::parse(read_text_file(file));
-    if (root.value("format", "") != "sketchlab-sketch")
+    const json root = json::parse(text_in);
+    if (!root.is_object() || root.value("format", "") != "sketchlab-sketch")
       throw std::invalid_argument("format: expected \"sketchlab-sketch\"");
-    if (number<int>(root, "version", "sketch") != sketch_format_version)
+    if (number<std::int64_t>(root, "version", "sketch") != sketch_format_version)
       throw std::invalid_argument("version: only version " + std::to_string(sketch_format_version) +
                                   " is supported");
     Sketch sketch;
     sketch.workspace = json_codec::workspace_from_json(field(root, "workspace", "sketch"), "workspace");
     Edit edit;
-    for (const json& c : field(root, "curves", "sketch")) {
+    for (const json& c : list(root, "curves", "sketch")) {
       NetworkCurve nc;
       const std::string what = "curve " + field(c, "id", "curve").dump();
       nc.id = number<CurveId>(c, "id", what);
-      nc.layer = layer_from_string(field(c, "layer", what).get<std::string>());
+      nc.layer = layer_from_string(text(c, "layer", what));
       nc.source_stroke = number<StrokeId>(c, "source_stroke", what);
       nc.curve = json_codec::curve_from_json(field(c, "curve", what), what + ".curve");
-      for (const json& k : field(c, "keypoints", what))
-        nc.keypoints.push_back({keypoint_kind_from(field(k, "kind", what).get<std::string>(), what),
-                                number<double>(k, "t", what), vec3_from(field(k, "position", what), what)});
-      for (const json& n : field(c, "normals", what))
+      for (const json& k : list(c, "keypoints", what))
+        nc.keypoints.push_back({keypoint_kind_from(text(k, "kind", what), what), number<double>(k, "t", what),
+                                vec3_from(field(k, "position", what), what)});
+      for (const json& n : list(c, "normals", what))
         nc.normals.push_back({number<double>(n, "t", what), vec3_from(field(n, "normal", what), what)});
       edit.curves_added.push_back(std::move(nc));
     }
-    for (const json& n : field(root, "nodes", "sketch")) {
+    for (const json& n : list(root, "nodes", "sketch")) {
       Node node;
       const std::string what = "node " + field(n, "id", "node").dump();
       node.id = number<NodeId>(n, "id", what);
       node.position = vec3_from(field(n, "position", what), what + ".position");
-      for (const json& i : field(n, "incidences", what))
+      for (const json& i : list(n, "incidences", what))
         node.incidences.push_back({number<CurveId>(i, "curve", what), number<double>(i, "t", what)});
       edit.nodes_added.push_back(std::move(node));
     }
-    for (const json& p : field(root, "patches", "sketch")) {
+    for (const json& p : list(root, "patches", "sketch")) {
       Patch patch;
       const std::string what = "patch " + field(p, "id", "patch").dump();
       patch.id = number<PatchId>(p, "id", what);
-      patch.automatic = field(p, "automatic", what).get<bool>();
-      for (const json& b : field(p, "boundary", what))
+      patch.automatic = boolean(p, "automatic", what);
+      for (const json& b : list(p, "boundary", what))
         patch.boundary.push_back({number<CurveId>(b, "curve", what), number<double>(b, "t_from", what),
                                   number<double>(b, "t_to", what), number<NodeId>(b, "node_from", what),
                                   number<NodeId>(b, "node_to", what)});
       const json& mesh = field(p, "mesh", what);
-      for (const json& v : field(mesh, "vertices", what)) patch.mesh.vertices.push_back(vec3_from(v, what));
-      for (const json& f : field(mesh, "faces", what)) {
+      for (const json& v : list(mesh, "vertices", what)) patch.mesh.vertices.push_back(vec3_from(v, what));
+      const int vertices = static_cast<int>(patch.mesh.vertices.size());
+      for (const json& f : list(mesh, "faces", what)) {
         if (!f.is_array() || f.size() != 3) throw std::invalid_argument(what + ": faces must be triangles");
-        patch.mesh.faces.push_back({f[0].get<int>(), f[1].get<int>(), f[2].get<int>()});
+        std::array<int, 3> face{};
+        for (int k = 0; k < 3; ++k) {
+          face[k] = integer<int>(f[k], what + ".faces");
+          if (face[k] < 0 || face[k] >= vertices)
+            throw std::invalid_argument(what + ".faces: vertex index " + std::to_string(face[k]) +
+                                        " outside [0, " + std::to_string(vertices) + ")");
+        }
+        patch.mesh.faces.push_back({face[0], face[1], face[2]});
       }
       edit.patches_added.push_back(std::move(patch));
     }
@@ -208,6 +273,10 @@ Sketch read_sketch_json(const std::filesystem::path& file) {
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(name + ": " + e.what());
   }
+}
+
+Sketch read_sketch_json(const std::filesystem::path& file) {
+  return parse_sketch_json(read_text_file(file), file.string());
 }
 
 }  // namespace sketchlab

@@ -16,6 +16,10 @@ namespace {
 constexpr double kCellCoordLimit = 1 << 30;
 // A cubic segment longer than a cell is cut into at most this many chunks.
 constexpr int kMaxChunksPerSegment = 1024;
+// A chunk box spanning more cells than this goes to the oversized list. A
+// chunk about one cell long spans at most 2 cells per axis, 3 with its
+// slack on a cell boundary: 27 cells.
+constexpr double kMaxCellsPerChunk = 64;
 // Extents fed to the cell-size statistic are clamped to this range (metres)
 // so that a degenerate (point-like) or absurd segment cannot drag it to 0 or
 // infinity.
@@ -161,6 +165,12 @@ void SpatialIndex::insert_curve(const NetworkCurve& nc) {
       box.min().array() -= slack;
       box.max().array() += slack;
       const CellRange range = range_of(box);
+      ++record.chunk_count;
+      if (range.count() > kMaxCellsPerChunk) {
+        oversized_.push_back(ChunkRef{nc.id, box});
+        record.oversized = true;
+        continue;
+      }
       for (std::int32_t x = range.lo.x; x <= range.hi.x; ++x)
         for (std::int32_t y = range.lo.y; y <= range.hi.y; ++y)
           for (std::int32_t z = range.lo.z; z <= range.hi.z; ++z) {
@@ -168,7 +178,6 @@ void SpatialIndex::insert_curve(const NetworkCurve& nc) {
             curve_cells_[key].push_back(ChunkRef{nc.id, box});
             record.chunk_cells.push_back(key);
           }
-      ++record.chunk_count;
     }
   }
   for (int i = 0; i < static_cast<int>(nc.keypoints.size()); ++i) {
@@ -198,6 +207,10 @@ void SpatialIndex::erase_curve(CurveId id) {
     erase_from_cell(curve_cells_, key, [&](const ChunkRef& c) { return c.curve == id; });
   for (const CellKey& key : record.keypoint_cells)
     erase_from_cell(keypoint_cells_, key, [&](const KeypointRef& k) { return k.curve == id; });
+  if (record.oversized)
+    oversized_.erase(std::remove_if(oversized_.begin(), oversized_.end(),
+                                    [&](const ChunkRef& c) { return c.curve == id; }),
+                     oversized_.end());
   log_extent_sum_ -= record.log_extent_sum;
   segment_count_ -= record.segment_count;
   chunk_count_ -= record.chunk_count;
@@ -232,10 +245,12 @@ std::vector<CurveId> SpatialIndex::curve_candidates(const Vec3& p, double r) con
   if (cell_ <= 0.0) return out;
   const Box3 query(p.array() - r, p.array() + r);
   const double r2 = r * r;
-  for_cells(curve_cells_, range_of(query), [&](const std::vector<ChunkRef>& items) {
+  auto test = [&](const std::vector<ChunkRef>& items) {
     for (const ChunkRef& c : items)
       if (c.box.squaredExteriorDistance(p) <= r2) out.push_back(c.curve);
-  });
+  };
+  for_cells(curve_cells_, range_of(query), test);
+  test(oversized_);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -251,13 +266,15 @@ std::vector<CurveId> SpatialIndex::curve_candidates(const std::vector<Vec3>& pol
     Box3 query(a.cwiseMin(b), a.cwiseMax(b));
     query.min().array() -= r;
     query.max().array() += r;
-    for_cells(curve_cells_, range_of(query), [&](const std::vector<ChunkRef>& items) {
+    auto test = [&](const std::vector<ChunkRef>& items) {
       for (const ChunkRef& c : items) {
         const Vec3 lo = c.box.min().array() - r;
         const Vec3 hi = c.box.max().array() + r;
         if (segment_meets_box(a, b, lo, hi)) out.push_back(c.curve);
       }
-    });
+    };
+    for_cells(curve_cells_, range_of(query), test);
+    test(oversized_);
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -4,6 +4,11 @@
 //  - curve chunks: each cubic segment of a curve, cut into pieces no larger
 //    than about one cell, with its tight bounding box;
 //  - keypoints and node positions (one cell each).
+// A chunk that would still cover more than a few cells (a segment so long
+// that even kMaxChunksPerSegment pieces are many cells wide: a tracking
+// glitch kilometres away in a sketch of centimetre segments) is kept in a
+// short list of oversized chunks that every query scans instead, so one
+// absurd segment costs a list entry, not millions of cells.
 // Queries return conservative candidate sets (every curve with a chunk box
 // within r of the query); Network computes exact distances on them. Point
 // items (keypoints, nodes) are answered exactly here.
@@ -44,6 +49,7 @@ class SpatialIndex {
   double cell_size() const { return cell_; }
   std::size_t chunk_count() const { return chunk_count_; }
   std::size_t occupied_cells() const { return curve_cells_.size(); }
+  std::size_t oversized_chunks() const { return oversized_.size(); }
 
  private:
   struct CellKey {
@@ -77,6 +83,7 @@ class SpatialIndex {
     double log_extent_sum = 0.0;          // over its cubic segments
     int segment_count = 0;
     std::size_t chunk_count = 0;
+    bool oversized = false;  // some chunk is in oversized_
   };
 
   CellKey cell_of(const Vec3& p) const;
@@ -90,6 +97,7 @@ class SpatialIndex {
 
   double cell_ = 0.0;  // 0 until the first curve fixes it
   std::unordered_map<CellKey, std::vector<ChunkRef>, CellHash> curve_cells_;
+  std::vector<ChunkRef> oversized_;
   std::unordered_map<CellKey, std::vector<KeypointRef>, CellHash> keypoint_cells_;
   std::unordered_map<CellKey, std::vector<NodeRef>, CellHash> node_cells_;
   std::unordered_map<CurveId, CurveRecord> curves_;

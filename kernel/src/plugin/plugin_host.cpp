@@ -9,6 +9,9 @@
 #include <set>
 #include <system_error>
 
+#include "elf_check.hpp"
+#include "plugin_probe.hpp"
+
 #ifndef SKETCHLAB_BUILD_PLUGIN_DIR
 #define SKETCHLAB_BUILD_PLUGIN_DIR ""
 #endif
@@ -99,6 +102,13 @@ std::string list_names(const std::vector<LoadedPlugin>& plugins, PluginKind kind
 
 }  // namespace
 
+PluginLoadOptions PluginLoadOptions::from_environment() {
+  PluginLoadOptions options;
+  const char* probe = std::getenv("SKETCHLAB_PLUGIN_PROBE");
+  options.probe = probe && std::string_view(probe) == "1";
+  return options;
+}
+
 std::vector<fs::path> PluginHost::default_search_paths() {
   std::vector<fs::path> dirs;
   std::set<fs::path> seen;
@@ -131,10 +141,10 @@ void PluginHost::load_directories(const std::vector<fs::path>& dirs) {
     std::vector<fs::path> files;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
       const auto name = it->path().filename().string();
-      if (name.rfind("sketchlab_", 0) == 0 && it->path().extension() == ".so" &&
-          !it->is_directory(ec)) {
+      // Directories and other non-files so named are passed on: load_file
+      // reports them instead of skipping them silently.
+      if (name.rfind("sketchlab_", 0) == 0 && it->path().extension() == ".so")
         files.push_back(it->path());
-      }
     }
     if (ec) {
       errors_.push_back({dir, "cannot list directory: " + ec.message()});
@@ -162,6 +172,13 @@ bool PluginHost::load_file(const fs::path& file) {
   if (const LoadedPlugin* earlier = find(expected->kind, expected->name)) {
     return fail(std::string(to_string(expected->kind)) + " '" + expected->name +
                 "' is already loaded from " + earlier->path.string() + "; this copy is ignored");
+  }
+
+  if (auto problem = plugin_detail::check_elf_library(file); !problem.empty()) return fail(problem);
+  if (options_.probe) {
+    if (auto problem = plugin_detail::probe_in_child(file, entry_symbol, options_.probe_timeout);
+        !problem.empty())
+      return fail(problem);
   }
 
   // RTLD_NOW: an unresolved symbol is reported here, with its name, instead

@@ -193,6 +193,14 @@ Stroke stroke_from_json(const json& j) {
              format_number(smp.orientation.norm()) + ")");
       }
     }
+    // Correctors measure speeds and durations along the stroke (line
+    // detection, hooks): times running backwards would be refused by each of
+    // them, so the reader names the sample instead.
+    if (!s.samples.empty() && smp.time < s.samples.back().time) {
+      fail("field '" + at(3) + "' (time) = " + format_number(smp.time) + " is earlier than the " +
+           "previous sample's " + format_number(s.samples.back().time) +
+           "; sample times must not decrease along a stroke");
+    }
     s.samples.push_back(smp);
   }
   if (const std::string why = validate(s); !why.empty()) fail(why);

@@ -8,6 +8,7 @@
 
 #include "sketchlab/curve.hpp"
 #include "sketchlab/event.hpp"
+#include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/view.hpp"
 #include "sketchlab/workspace.hpp"
 
@@ -16,8 +17,8 @@ namespace sketchlab::json_codec {
 using ojson = nlohmann::ordered_json;
 using json = nlohmann::json;
 
-inline constexpr double max_coordinate = 1e6;  // metres or pixels
-inline constexpr double max_time = 1e9;        // seconds
+inline constexpr double max_coordinate = recording_max_coordinate;  // metres or pixels
+inline constexpr double max_time = recording_max_time;              // seconds
 
 ojson to_json(const Vec3& v);
 ojson to_json(const Workspace& ws);

@@ -1,10 +1,11 @@
 #include "sketchlab/recording/recording_writer.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 
 #include "json_codec.hpp"
@@ -30,9 +31,11 @@ RecordingWriter::RecordingWriter(const std::filesystem::path& path, const Record
                                  bool overwrite)
     : path_(path) {
   const std::string line = to_json_line(header);  // validates before touching the disk
-  // "x" (C11) creates exclusively: no race between an existence check and the open.
-  file_ = std::fopen(path.c_str(), overwrite ? "wb" : "wbx");
-  if (!file_) {
+  // O_EXCL creates exclusively: no race between an existence check and the
+  // open. O_APPEND: after a failed line is cut off, the next one starts at the
+  // new end.
+  fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | (overwrite ? O_TRUNC : O_EXCL), 0644);
+  if (fd_ < 0) {
     const int err = errno;
     if (!overwrite && err == EEXIST) {
       throw std::runtime_error(path.string() +
@@ -45,15 +48,35 @@ RecordingWriter::RecordingWriter(const std::filesystem::path& path, const Record
 }
 
 RecordingWriter::~RecordingWriter() {
-  if (file_) std::fclose(file_);
+  if (fd_ >= 0) ::close(fd_);
 }
 
 void RecordingWriter::write_line(const std::string& line) {
-  if (!file_) throw std::runtime_error(path_.string() + ": the recording writer is closed");
+  if (fd_ < 0) throw std::runtime_error(path_.string() + ": the recording writer is closed");
   const std::string text = line + "\n";
-  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
-    throw std::runtime_error(path_.string() + ": write failed: " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    const int err = n < 0 ? errno : ENOSPC;
+    std::string what = path_.string() + ": write failed after " + std::to_string(done) + " of " +
+                       std::to_string(text.size()) + " bytes of line " + std::to_string(lines_ + 1) +
+                       ": " + std::strerror(err);
+    // Cut the partial line off so that the file still ends with a complete
+    // line; where that fails, stop writing so the partial line stays last.
+    if (done > 0 && ::ftruncate(fd_, static_cast<off_t>(bytes_)) != 0) {
+      what += "; the partial line could not be removed (" + std::string(std::strerror(errno)) +
+              "), so the writer is closed (readers skip a partial last line)";
+      ::close(fd_);
+      fd_ = -1;
+    }
+    throw std::runtime_error(what);
   }
+  bytes_ += text.size();
   ++lines_;
 }
 
@@ -64,9 +87,9 @@ void RecordingWriter::append(const Event& event) {
 }
 
 void RecordingWriter::close() {
-  if (!file_) return;
-  const int rc = std::fclose(file_);
-  file_ = nullptr;
+  if (fd_ < 0) return;
+  const int rc = ::close(fd_);
+  fd_ = -1;
   if (rc != 0) throw std::runtime_error(path_.string() + ": close failed: " + std::strerror(errno));
 }
 

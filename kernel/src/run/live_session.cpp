@@ -21,7 +21,8 @@ LiveSession::LiveSession(const RecordingHeader& header, std::vector<StackInstanc
       stacks_(require_stacks(std::move(stacks))),
       writer_(recording, header, overwrite) {
   sessions_.reserve(stacks_.size());
-  for (const auto& s : stacks_) sessions_.emplace_back(header_.workspace, s.corrector, s.surfacer);
+  for (const auto& s : stacks_) sessions_.emplace_back(header_.workspace, s.corrector, s.surfacer, PreprocessParams{},
+                           s.time_budget_s);
 }
 
 std::vector<StepReport> LiveSession::handle(const Event& event) {

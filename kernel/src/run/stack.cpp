@@ -7,6 +7,7 @@ namespace sketchlab {
 StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host) {
   StackInstance s;
   s.name = stack.name;
+  if (stack.time_budget) s.time_budget_s = *stack.time_budget;
   try {
     s.corrector = host.make_corrector(stack.corrector.plugin, stack.corrector.params);
   } catch (const ParamError& e) {
@@ -44,7 +45,8 @@ std::shared_ptr<Input> instantiate_input(const StackConfig& stack, const PluginH
 
 ReplayResult replay(Input& input, const StackInstance& stack) {
   const RecordingHeader header = input.header();
-  ReplayResult result{stack.name, header, Session(header.workspace, stack.corrector, stack.surfacer),
+  ReplayResult result{stack.name, header, Session(header.workspace, stack.corrector, stack.surfacer, {},
+                                                       stack.time_budget_s),
                       {}};
   while (auto event = input.next()) result.steps.push_back(result.session.handle(*event));
   if (auto error = input.error(); !error.empty())

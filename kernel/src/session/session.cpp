@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "sketchlab/draw_plane.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/recording/event_json.hpp"
 
 namespace sketchlab {
 namespace {
@@ -36,6 +38,44 @@ std::string check_patch_only(const Edit& e) {
   return {};
 }
 
+// Empty when every sample of `s` is within the recording format's bounds
+// (event_json.hpp), else the reason naming the first one beyond them. Some
+// stroke-sized passes step through a stroke in fixed increments: at 1e12 m
+// they never finish.
+std::string beyond_bounds(const Stroke& s, const char* what) {
+  for (std::size_t i = 0; i < s.samples.size(); ++i) {
+    const double x = s.samples[i].position.cwiseAbs().maxCoeff();
+    const bool far = x > recording_max_coordinate;
+    if (far || std::abs(s.samples[i].time) > recording_max_time) {
+      std::ostringstream text;
+      text << "stroke " << s.id << " sample " << i << what
+           << (far ? " has a coordinate of magnitude " : " has time ")
+           << (far ? x : s.samples[i].time) << "; strokes are limited to "
+           << (far ? recording_max_coordinate : recording_max_time)
+           << (far ? (s.samples_are_pixels ? " px" : " m") : " s") << ", as recordings are";
+      return text.str();
+    }
+  }
+  return {};
+}
+
+// A surfacer call that cannot throw: whatever escapes it (a plugin built
+// without the wrappers of plugin_api.hpp) becomes the update's error.
+template <class F>
+SurfaceUpdate guarded_surfacer(F&& call) {
+  SurfaceUpdate failed;
+  try {
+    return call();
+  } catch (const BudgetExceeded& e) {
+    failed.error = e.message();
+  } catch (const std::exception& e) {
+    failed.error = e.what();
+  } catch (...) {
+    failed.error = "unknown exception";
+  }
+  return failed;
+}
+
 }  // namespace
 
 Edit freehand_edit(const Stroke& stroke, const Sketch& sketch, const PreprocessParams& params) {
@@ -51,9 +91,15 @@ Edit freehand_edit(const Stroke& stroke, const Sketch& sketch, const PreprocessP
 }
 
 Session::Session(const Workspace& workspace, std::shared_ptr<Corrector> corrector,
-                 std::shared_ptr<Surfacer> surfacer, PreprocessParams fallback)
-    : corrector_(std::move(corrector)), surfacer_(std::move(surfacer)), fallback_(fallback) {
+                 std::shared_ptr<Surfacer> surfacer, PreprocessParams fallback,
+                 double time_budget_s)
+    : corrector_(std::move(corrector)),
+      surfacer_(std::move(surfacer)),
+      fallback_(fallback),
+      time_budget_s_(time_budget_s) {
   if (!corrector_) throw std::invalid_argument("Session: a corrector is required");
+  if (!(time_budget_s_ > 0.0))
+    throw std::invalid_argument("Session: the time budget must be > 0 seconds");
   sketch_.workspace = workspace;
 }
 
@@ -108,9 +154,26 @@ StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
     report.error = why;
     return report;
   }
+  if (input.samples.size() > max_stroke_samples) {
+    report.error = "stroke " + std::to_string(input.id) + " has " + std::to_string(input.samples.size()) +
+                   " samples; a stroke may have at most " + std::to_string(max_stroke_samples);
+    return report;
+  }
+  if (auto why = beyond_bounds(input, ""); !why.empty()) {
+    report.error = why;
+    return report;
+  }
   if (sketch_.strokes.count(input.id)) {
     report.error = "stroke id " + std::to_string(input.id) + " was already used in this session";
     return report;
+  }
+  // A 2D stroke is lifted (or corrected) through its camera's rays: a
+  // singular camera would make every ray computation throw.
+  if (input.is_2d()) {
+    if (auto why = view_problem(*input.view); !why.empty()) {
+      report.error = "stroke " + std::to_string(input.id) + ": " + why;
+      return report;
+    }
   }
   Stroke stroke = input;
   if (stroke.layer == Layer::automatic) stroke.layer = sketch_.mode;
@@ -120,32 +183,38 @@ StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
   const auto start = std::chrono::steady_clock::now();
   // The sketch keeps the stroke as recorded; world-space fitting gets a 2D
   // stroke drawn on a plane lifted onto it.
-  std::string lift_error;
-  const bool pixels_wanted =
-      sketch_.correction_enabled && corrector_->stroke_space() == StrokeSpace::pixels;
-  const Stroke world = pixels_wanted ? stroke : lift_to_draw_plane(stroke, lift_error);
-  if (!lift_error.empty()) {
-    report.error = lift_error;
-    return report;
-  }
   Edit edit;
-  if (sketch_.correction_enabled) {
-    Correction c = corrector_->correct(world, sketch_);
-    report.corrected = true;
-    report.stats = std::move(c.stats);
-    report.constraints = std::move(c.constraints);
-    if (!c.error.empty()) {
-      report.error = "corrector: " + c.error;
+  // Nothing below may escape: the stroke stays recorded and its error names
+  // what went wrong.
+  try {
+    std::string lift_error;
+    const bool pixels_wanted =
+        sketch_.correction_enabled && corrector_->stroke_space() == StrokeSpace::pixels;
+    const Stroke world = pixels_wanted ? stroke : lift_to_draw_plane(stroke, lift_error);
+    if (lift_error.empty()) lift_error = beyond_bounds(world, " lifted onto its draw plane");
+    if (!lift_error.empty()) {
+      report.error = lift_error;
       return report;
     }
-    edit = std::move(c.edit);
-  } else {
-    try {
+    if (sketch_.correction_enabled) {
+      Correction c = corrector_->correct(world, sketch_);
+      report.corrected = true;
+      report.stats = std::move(c.stats);
+      report.constraints = std::move(c.constraints);
+      if (!c.error.empty()) {
+        report.error = "corrector: " + c.error;
+        return report;
+      }
+      edit = std::move(c.edit);
+    } else {
       edit = freehand_edit(world, sketch_, fallback_);
-    } catch (const std::exception& e) {
-      report.error = e.what();
-      return report;
     }
+  } catch (const BudgetExceeded& e) {
+    report.error = "stroke " + std::to_string(stroke.id) + ": " + e.message();
+    return report;
+  } catch (const std::exception& e) {
+    report.error = e.what();
+    return report;
   }
   try {
     apply_step(edit, entry, report);
@@ -154,7 +223,8 @@ StepReport Session::handle_stroke(const Stroke& input, StepReport report) {
     return report;
   }
   if (surfacer_ && !entry.steps.empty())
-    apply_surfacer(surfacer_->update(sketch_, entry.steps.back().forward), entry, report);
+    apply_surfacer(guarded_surfacer([&] { return surfacer_->update(sketch_, entry.steps.back().forward); }),
+                   entry, report);
   report.latency_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   commit(std::move(entry));
@@ -171,7 +241,8 @@ StepReport Session::remove_curves(const std::vector<CurveId>& curves, const std:
   Edit edit;
   edit.curves_removed = curves;
   apply_step(edit, entry, report);
-  if (surfacer_) apply_surfacer(surfacer_->update(sketch_, edit), entry, report);
+  if (surfacer_)
+    apply_surfacer(guarded_surfacer([&] { return surfacer_->update(sketch_, edit); }), entry, report);
   commit(std::move(entry));
   return report;
 }
@@ -183,7 +254,7 @@ void Session::surfacer_command(const SurfaceCommand& command, const std::string&
     return;
   }
   HistoryEntry entry{action, std::nullopt, {}};
-  apply_surfacer(surfacer_->command(sketch_, command), entry, report);
+  apply_surfacer(guarded_surfacer([&] { return surfacer_->command(sketch_, command); }), entry, report);
   commit(std::move(entry));
 }
 
@@ -192,6 +263,7 @@ StepReport Session::handle(const Event& event) {
   report.event = std::string(event_type_name(event.payload));
   report.time = event.time;
   Reversal reversal{sketch_.workspace, sketch_.mode, sketch_.correction_enabled};
+  const BudgetScope budget(time_budget_s_);
   const std::size_t strokes_before = sketch_.strokes.size();
   last_committed_ = false;
   auto undo_redo = [&](std::vector<HistoryEntry>& from, std::vector<HistoryEntry>& to, bool undo) {
@@ -243,7 +315,7 @@ StepReport Session::handle(const Event& event) {
             }
             HistoryEntry entry{"recompute_surface", std::nullopt, {}};
             const auto start = std::chrono::steady_clock::now();
-            const SurfaceUpdate update = surfacer_->recompute(sketch_);
+            const SurfaceUpdate update = guarded_surfacer([&] { return surfacer_->recompute(sketch_); });
             report.latency_ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             // The surfacer's figures (constraints, residuals, times) travel with the step.

@@ -7,6 +7,7 @@
 
 #include "curve_fit.hpp"
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/plugin/budget.hpp"
 
 namespace sketchlab::analytic {
 
@@ -283,6 +284,7 @@ CurveInference infer_curve(const Scaffold& s, const Camera& cam, const Stroke2d&
   // good candidates come early and the bound prunes the rest.
   std::vector<FitResult> free_fits(subsets.size());
   for (std::size_t i = 0; i < subsets.size(); ++i) {
+    check_budget();  // issue 17: the per-event time budget
     Subset& sub = subsets[i];
     CurveCombination c;
     c.points = sub.points;
@@ -320,6 +322,7 @@ CurveInference infer_curve(const Scaffold& s, const Camera& cam, const Stroke2d&
     return r;
   };
   for (std::size_t oi : order) {
+    check_budget();  // issue 17: the per-event time budget
     const Subset& sub = subsets[oi];
     const std::size_t n = sub.points.size();
     long long family = sub.symmetric ? 2 : 1;

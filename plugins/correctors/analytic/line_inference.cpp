@@ -7,6 +7,7 @@
 #include <random>
 
 #include "curve_crossing.hpp"
+#include "sketchlab/plugin/budget.hpp"
 
 namespace sketchlab::analytic {
 
@@ -385,9 +386,11 @@ LineInference infer_line(const Scaffold& s, const Camera& cam, const Stroke2d& s
   // combinations fixed for the perturbed strokes (§3.1 "for efficiency").
   {
     std::vector<Triplet> kept;
-    for (const Triplet& t : out.candidates.triplets)
+    for (const Triplet& t : out.candidates.triplets) {
+      check_budget();  // issue 17: the per-event time budget
       if (t.distance.type == DistanceConstraint::Type::free || evaluate_triplet(t, out.candidates, s, cam, ends))
         kept.push_back(t);
+    }
     out.candidates.triplets = std::move(kept);
   }
   const LineCandidates& c = out.candidates;
@@ -425,6 +428,7 @@ LineInference infer_line(const Scaffold& s, const Camera& cam, const Stroke2d& s
   std::normal_distribution<double> normal(0.0, 1.0 / std::sqrt(2.0));
   const int samples = std::max(1, p.perturbation_samples);
   for (int k = 0; k < samples; ++k) {
+    check_budget();  // issue 17: the per-event time budget
     Vec2 ea = ends[0].pixel, eb = ends[1].pixel;
     if (k > 0) {
       ea += ends[0].delta * Vec2(normal(rng), normal(rng));

@@ -6,6 +6,7 @@
 
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/split.hpp"
+#include "sketchlab/plugin/budget.hpp"
 
 namespace sketchlab::cassie {
 
@@ -112,6 +113,7 @@ SearchResult greedy_search(const Curve& fitted, const std::vector<Candidate>& ca
     double e_best = inf;
     int drop_if_stuck = -1;
     for (std::size_t k = 0; k < current.size(); ++k) {
+      check_budget();  // issue 17: the per-event time budget
       std::vector<int> child = current;
       child.erase(child.begin() + static_cast<std::ptrdiff_t>(k));
       const int before = solves;

@@ -2,6 +2,8 @@
 
 #include <optional>
 
+#include "sketchlab/plugin/budget.hpp"
+
 namespace sketchlab::justdrawit {
 
 std::vector<Candidate> gather_candidates(const Scene& scene, const Points2& s2, const std::vector<double>& cum,
@@ -13,6 +15,7 @@ std::vector<Candidate> gather_candidates(const Scene& scene, const Points2& s2, 
   };
   std::vector<Ends> ends(scene.items.size());
   for (std::size_t i = 0; i < scene.items.size(); ++i) {
+    check_budget();  // issue 17: the per-event time budget
     const SceneItem& it = scene.items[i];
     // Nothing behind a visible draw plane (§4.3).
     if (ctx.draw_plane) {
@@ -49,6 +52,7 @@ std::vector<Candidate> gather_candidates(const Scene& scene, const Points2& s2, 
     return m.kind == EndKind::join || (m.kind == EndKind::merge && m.overhang);
   };
   for (std::size_t i = 0; i < scene.items.size(); ++i) {
+    check_budget();  // issue 17: the per-event time budget
     if (!attaches(ends[i].s) || scene.items[i].proj.closed) continue;
     for (std::size_t j = 0; j < scene.items.size(); ++j) {
       if (j == i || !attaches(ends[j].e) || scene.items[j].proj.closed) continue;

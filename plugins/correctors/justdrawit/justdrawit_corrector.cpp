@@ -18,6 +18,7 @@
 #include "network_curves.hpp"
 #include "new_curve_placement.hpp"
 #include "scratch.hpp"
+#include "sketchlab/draw_plane.hpp"
 #include "stroke_scene.hpp"
 
 namespace sketchlab::justdrawit {
@@ -116,11 +117,11 @@ Points2 prepare_stroke(const Stroke& stroke, const JdiParams& p) {
   Points2 pts = dedupe(pixels(stroke), 1e-9);
   if (pts.size() < 2 || !(length(pts) > 1e-6)) return pts;
   // §4.5: at least 10 samples per d, then N rounds of smoothing.
-  pts = resample(pts, 0.1 * p.d);
+  pts = resample(pts, stroke_spacing(pts, p.d));
   smooth(pts, p.smoothing);
   if (p.scratch) {
     pts = unfold_stroke(pts, p.d);
-    if (pts.size() >= 2 && length(pts) > 1e-6) pts = resample(pts, 0.1 * p.d);
+    if (pts.size() >= 2 && length(pts) > 1e-6) pts = resample(pts, stroke_spacing(pts, p.d));
   }
   return pts;
 }
@@ -133,9 +134,27 @@ Correction justdrawit_correct(const Stroke& stroke, const Sketch& sketch, const 
     return out;
   }
   const Camera cam(*stroke.view);
+  Stroke kept = stroke;
+  std::erase_if(kept.samples, [&](const Sample& s) {
+    return !on_screen(s.position.head<2>(), stroke.view->viewport);
+  });
+  const std::size_t glitches = stroke.samples.size() - kept.samples.size();
+  if (stroke.draw_plane) {
+    // As for world-space correctors (kernel lift_to_draw_plane): a ray that
+    // misses the plane, or grazes it, puts the stroke absurdly far away.
+    std::string miss;
+    lift_to_draw_plane(kept, miss);
+    if (!miss.empty()) {
+      out.error = miss;
+      return out;
+    }
+  }
   Points2 s2 = prepare_stroke(stroke, p);
   if (s2.size() < 2 || !(length(s2) > 1e-6)) {
-    out.error = "stroke " + std::to_string(stroke.id) + " has zero length";
+    out.error = "stroke " + std::to_string(stroke.id) + " has zero length" +
+                (glitches ? " once its " + std::to_string(glitches) +
+                                " samples far off screen (more than a viewport outside it) are left out"
+                          : "");
     return out;
   }
   if (p.surface == SurfaceKind::inflation && stroke.layer == Layer::guide) {
@@ -170,7 +189,8 @@ Correction justdrawit_correct(const Stroke& stroke, const Sketch& sketch, const 
       for (auto st = done[k].steps.rbegin(); st != done[k].steps.rend(); ++st) base.apply(st->inverse);
     std::vector<Points2> sections(chain.rbegin(), chain.rend());
     sections.push_back(s2);
-    s2 = resample(blend_sections(std::move(sections), p.d), 0.1 * p.d);
+    const Points2 blended = blend_sections(std::move(sections), p.d);
+    s2 = resample(blended, stroke_spacing(blended, p.d));
     net = &base;
   }
   if (stroke.draw_plane) {
@@ -186,6 +206,7 @@ Correction justdrawit_correct(const Stroke& stroke, const Sketch& sketch, const 
     return out;
   }
   o.stats.extra["blended_strokes"] = static_cast<double>(chain.size());
+  if (glitches) o.stats.extra["offscreen_samples_dropped"] = static_cast<double>(glitches);
   if (!chain.empty()) {
     Network next = base;
     next.apply(o.edit);

@@ -9,9 +9,9 @@
 
 namespace sketchlab::justdrawit {
 
-// The stroke as the analysis uses it (§4.1, §4.5): pixels, resampled to 10
-// points per d, N rounds of smoothing, unfolded when it scratches back and
-// forth (if enabled).
+// The stroke as the analysis uses it (§4.1, §4.5): on-screen pixels,
+// resampled to 10 points per d, N rounds of smoothing, unfolded when it
+// scratches back and forth (if enabled).
 Points2 prepare_stroke(const Stroke& stroke, const JdiParams& p);
 
 Correction justdrawit_correct(const Stroke& stroke, const Sketch& sketch, const JdiParams& p);

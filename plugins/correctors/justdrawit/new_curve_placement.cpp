@@ -81,7 +81,8 @@ std::optional<Points3> place_new(const Points2& s2, const Stroke& stroke, const 
       Vec3 towards = -ctx.cam.forward();
       for (const Stroke* g : guides) {
         const Camera gc(*g->view);
-        const Points2 g2 = resample(dedupe(pixels(*g), 1e-9), 0.1 * ctx.d);
+        const Points2 pts = dedupe(pixels(*g), 1e-9);
+        const Points2 g2 = resample(pts, stroke_spacing(pts, ctx.d));
         if (g2.size() < 2) break;
         const Scene all = build_scene(net, gc, g2, ctx.d, false);
         std::vector<SceneCurve> curves;

@@ -7,11 +7,24 @@
 
 namespace sketchlab::justdrawit {
 
+bool on_screen(const Vec2& pixel, const Vec4& viewport) {
+  const double w = viewport[2], h = viewport[3];
+  return pixel.x() >= viewport[0] - w && pixel.x() <= viewport[0] + 2 * w &&
+         pixel.y() >= viewport[1] - h && pixel.y() <= viewport[1] + 2 * h;
+}
+
 Points2 pixels(const Stroke& stroke) {
   Points2 out;
   out.reserve(stroke.samples.size());
-  for (const Sample& s : stroke.samples) out.emplace_back(s.position.x(), s.position.y());
+  for (const Sample& s : stroke.samples) {
+    const Vec2 p(s.position.x(), s.position.y());
+    if (!stroke.view || on_screen(p, stroke.view->viewport)) out.push_back(p);
+  }
   return out;
+}
+
+double stroke_spacing(const Points2& pts, double d) {
+  return std::max(0.1 * d, length(pts) / (max_stroke_points - 1));
 }
 
 // §4.5 bounding-box culling: curves whose projected box lies far outside the

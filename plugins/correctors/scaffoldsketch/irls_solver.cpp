@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 
+#include "sketchlab/plugin/budget.hpp"
+
 namespace sketchlab::scaffoldsketch {
 namespace {
 
@@ -283,6 +285,7 @@ IrlsResult solve_irls(const std::vector<ScaffoldTerm>& input_terms, const Vec3& 
 
   Vec3 a = a0, b = b0;
   for (int k = 1; k <= options.max_iterations; ++k) {
+    check_budget();  // issue 17: the per-event time budget
     const Vec3 pa = a, pb = b;
     for (std::size_t i = 0; i < n; ++i) objective_weight[i] = merged.multiplicity[i] * w[i];
     result.solver_steps += minimise_weighted(terms, objective_weight, a, b, a0, b0);  // eq. 6

@@ -43,7 +43,10 @@ std::vector<Vec3> resample_every(const std::vector<Vec3>& points, double spacing
     if (distinct.empty() || (p - distinct.back()).norm() > 0) distinct.push_back(p);
   if (distinct.size() < 2) return distinct;
   const double length = polyline_length(distinct);
-  const int n = std::max(2, static_cast<int>(std::ceil(length / spacing)) + 1);
+  // Issue 17: at most 10^5 samples, whatever the length (a glitch sample
+  // 1000 km away asked for 10^9 and the memory to hold them).
+  const double wanted = std::ceil(length / spacing) + 1;
+  const int n = static_cast<int>(std::clamp(wanted, 2.0, 1e5));
   return resample_polyline(distinct, n);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sketchlab/recording/event_json.hpp"
 
 namespace sketchlab::openxr {
 namespace {
@@ -14,6 +15,19 @@ Layer next_mode(Layer mode) {
     default: return Layer::scaffold;
   }
 }
+
+// A glitching runtime may report NaN, infinite or absurd poses (found by
+// fuzz/fuzz_openxr_input): they are taken as lost tracking, so that nothing
+// the recording format refuses comes out.
+bool plausible(const RigidPose& p) {
+  const double q = p.orientation.norm();
+  return p.position.allFinite() && p.position.cwiseAbs().maxCoeff() <= recording_max_coordinate &&
+         std::isfinite(q) && q > 0.5 && q < 1.5;
+}
+
+// A workspace point the format can hold (a small zoom or a far placement
+// can push a plausible hand beyond it).
+bool recordable(const Vec3& w) { return w.allFinite() && w.cwiseAbs().maxCoeff() <= recording_max_coordinate; }
 
 // World (workspace) -> eye of a head pose: (P^-1 H)^-1 = H^-1 P.
 Mat4 head_view_matrix(const Placement& p, const RigidPose& head) {
@@ -35,10 +49,14 @@ GestureInterpreter::GestureInterpreter(const InputSettings& settings, const Work
   workspace_.scale = placement_.scale;
 }
 
-std::vector<Event> GestureInterpreter::step(const ControllerFrame& frame) {
+std::vector<Event> GestureInterpreter::step(const ControllerFrame& raw) {
   std::vector<Event> events;
-  if (!std::isfinite(frame.time) || frame.time < last_time_) return events;
-  last_time_ = frame.time;
+  if (!std::isfinite(raw.time) || raw.time < 0.0 || raw.time > recording_max_time || raw.time < last_time_)
+    return events;
+  last_time_ = raw.time;
+  ControllerFrame frame = raw;
+  frame.head_tracked = frame.head_tracked && plausible(frame.head);
+  for (HandFrame& h : frame.hands) h.tracked = h.tracked && plausible(h.aim);
   if (!frame.focused) {
     // Focus lost: the user no longer sees or holds the session; what was
     // being drawn is kept, gestures end, buttons must be pressed again.
@@ -129,9 +147,10 @@ void GestureInterpreter::update_draw(const ControllerFrame& frame, std::vector<E
   const bool dominant_grabbing = grab_ != Grab::none && (grab_ == Grab::two || grab_hand_ == static_cast<int>(settings_.dominant));
   if (drawing_ && (!pressed || dominant_grabbing)) end_stroke(frame.time, events);
   if (!drawing_ && pressed && !dominant_grabbing && hand.tracked) drawing_ = true;
-  if (!drawing_ || !hand.tracked || !hand.aim.position.allFinite()) return;
+  if (!drawing_ || !hand.tracked) return;
   Sample s;
   s.position = placement_.to_workspace(hand.aim.position);
+  if (!recordable(s.position)) return;
   s.time = frame.time;
   s.pressure = std::clamp(frame.draw_value, 0.0, 1.0);
   s.orientation = (placement_.rotation.conjugate() * hand.aim.orientation).normalized();
@@ -158,11 +177,11 @@ void GestureInterpreter::update_commands(const ControllerFrame& frame, std::vect
         events.push_back({frame.time, ModeEvent{mode_}});
         break;
       case Command::delete_nearest:
-        if (hand.tracked && point.allFinite())
+        if (hand.tracked && recordable(point))
           events.push_back({frame.time, DeleteNearEvent{point, scaled_threshold(settings_.delete_radius, workspace_.scale)}});
         break;
       case Command::add_patch:
-        if (hand.tracked && point.allFinite()) events.push_back({frame.time, AddPatchEvent{point}});
+        if (hand.tracked && recordable(point)) events.push_back({frame.time, AddPatchEvent{point}});
         break;
       case Command::toggle_correction:
         correction_ = !correction_;

@@ -31,7 +31,9 @@ class GestureInterpreter {
   GestureInterpreter(const InputSettings& settings, const Workspace& workspace);
 
   // Events caused by this frame, in order (zoom end, stroke end, commands),
-  // all at frame.time. Times must not decrease (earlier frames are ignored).
+  // all at frame.time. Times must not decrease (earlier frames are ignored,
+  // as are negative or non-finite times); a non-finite or absurd pose counts
+  // as not tracked. Every event is one the recording format accepts.
   std::vector<Event> step(const ControllerFrame& frame);
 
   const Placement& placement() const { return placement_; }

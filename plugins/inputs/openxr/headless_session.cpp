@@ -1,6 +1,12 @@
 #include "headless_session.hpp"
 
+#include <time.h>
+#define XR_USE_TIMESPEC
+#include <openxr/openxr_platform.h>
+
+#include <algorithm>
 #include <cstring>
+#include <thread>
 #include <vector>
 
 #include "xr_result.hpp"
@@ -34,15 +40,22 @@ HeadlessSession::HeadlessSession(const InputSettings& settings, const Workspace&
     throw XrError(XR_ERROR_EXTENSION_NOT_PRESENT,
                   "the OpenXR runtime lacks XR_MND_headless, which the openxr input needs on its own; "
                   "draw with `sketchlab vr CONFIG` instead (it reads the controllers in its session)");
-  const char* extensions[] = {XR_MND_HEADLESS_EXTENSION_NAME};
+  std::vector<const char*> extensions{XR_MND_HEADLESS_EXTENSION_NAME};
+  const bool clock = offers(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
+  if (clock) extensions.push_back(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
   XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
   std::strcpy(info.applicationInfo.applicationName, "sketchlab input");
   info.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
-  info.enabledExtensionCount = 1;
-  info.enabledExtensionNames = extensions;
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.enabledExtensionNames = extensions.data();
   if (const XrResult r = xrCreateInstance(&info, &instance_); XR_FAILED(r))
     throw XrError(r, std::string(no_runtime_hint) + " (xrCreateInstance: " + result_name(r) + ")");
+  poll_period_ = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(1.0 / settings.headless_poll_hz));
   try {
+    if (clock)
+      check(xrGetInstanceProcAddr(instance_, "xrConvertTimespecTimeToTimeKHR", &convert_time_),
+            "xrGetInstanceProcAddr(xrConvertTimespecTimeToTimeKHR)");
     if (const XrResult r = find_headset(instance_, runtime_name_, system_); XR_FAILED(r))
       throw XrError(r, "OpenXR runtime '" + runtime_name_ + "' has no headset (" + result_name(r) +
                            "): connect and switch on the headset");
@@ -83,9 +96,31 @@ bool HeadlessSession::poll_state() {
   return true;
 }
 
-std::vector<Event> HeadlessSession::next_events() {
-  std::vector<Event> events;
-  while (events.empty() && !ended_) {
+XrTime HeadlessSession::runtime_now() const {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  XrTime time = 0;
+  check(reinterpret_cast<PFN_xrConvertTimespecTimeToTimeKHR>(convert_time_)(instance_, &now, &time),
+        "xrConvertTimespecTimeToTimeKHR");
+  return time;
+}
+
+std::vector<Event> HeadlessSession::poll_controllers(XrTime time) {
+  if (start_ == 0) start_ = time;
+  const double seconds = static_cast<double>(time - start_) * 1e-9;
+  last_seconds_ = seconds;
+  return interpreter_.step(
+      actions_->poll(session_, base_, view_, time, seconds, state_ == XR_SESSION_STATE_FOCUSED));
+}
+
+void HeadlessSession::request_exit() {
+  if (running_) check(xrRequestExitSession(session_), "xrRequestExitSession");
+}
+
+std::vector<Event> HeadlessSession::next_events(std::chrono::milliseconds wait) {
+  using Clock = std::chrono::steady_clock;
+  const auto until = Clock::now() + wait;
+  while (!ended_) {
     if (!poll_state()) {
       ended_ = true;
       // The stroke in progress and an unfinished zoom are kept.
@@ -94,21 +129,28 @@ std::vector<Event> HeadlessSession::next_events() {
       last.time = last_seconds_;
       return interpreter_.step(last);
     }
-    if (!running_) continue;
-    XrFrameState fs{XR_TYPE_FRAME_STATE};
-    check(xrWaitFrame(session_, nullptr, &fs), "xrWaitFrame");
-    check(xrBeginFrame(session_, nullptr), "xrBeginFrame");
-    if (start_ == 0) start_ = fs.predictedDisplayTime;
-    const double seconds = static_cast<double>(fs.predictedDisplayTime - start_) * 1e-9;
-    last_seconds_ = seconds;
-    events = interpreter_.step(actions_->poll(session_, base_, view_, fs.predictedDisplayTime, seconds,
-                                              state_ == XR_SESSION_STATE_FOCUSED));
-    XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
-    end.displayTime = fs.predictedDisplayTime;
-    end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
-    check(xrEndFrame(session_, &end), "xrEndFrame");
+    std::vector<Event> events;
+    if (!running_) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    } else if (convert_time_) {
+      // No frame functions: paced here, timed by the runtime's clock.
+      const auto now = Clock::now();
+      if (next_poll_ > now) std::this_thread::sleep_until(next_poll_);
+      next_poll_ = std::max(next_poll_, now) + poll_period_;
+      events = poll_controllers(runtime_now());
+    } else {
+      XrFrameState fs{XR_TYPE_FRAME_STATE};
+      check(xrWaitFrame(session_, nullptr, &fs), "xrWaitFrame");
+      check(xrBeginFrame(session_, nullptr), "xrBeginFrame");
+      events = poll_controllers(fs.predictedDisplayTime);
+      XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
+      end.displayTime = fs.predictedDisplayTime;
+      end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+      check(xrEndFrame(session_, &end), "xrEndFrame");
+    }
+    if (!events.empty() || Clock::now() >= until) return events;
   }
-  return events;
+  return {};
 }
 
 }  // namespace sketchlab::openxr

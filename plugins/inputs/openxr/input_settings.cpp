@@ -47,6 +47,9 @@ std::vector<ParamSpec> input_param_specs() {
        "one-hand grab turns the workspace with the hand (else translation only)"},
       {"initial_mode", ParamType::choice, std::string("auto"), {}, {},
        {"auto", "scaffold", "shape", "free"}, "", "drawing mode at the start"},
+      {"headless_poll_hz", ParamType::real, d.headless_poll_hz, 1.0, 1000.0, {}, "Hz",
+       "controller polls per second on its own (sketchlab record) when the runtime has no frame "
+       "timing in headless sessions (Monado); time then comes from the runtime's clock"},
   };
   for (std::size_t i = 0; i < command_count; ++i)
     specs.push_back({std::string(command_names[i]) + "_button", ParamType::string, d.buttons[i], {}, {}, {}, "",
@@ -67,6 +70,7 @@ InputSettings settings_from_params(const Params& p) {
   s.grab_rotates = p.boolean("grab_rotates");
   const std::string mode = p.string("initial_mode");
   s.initial_mode = mode == "auto" ? Layer::automatic : layer_from_string(mode);
+  s.headless_poll_hz = p.real("headless_poll_hz");
   for (std::size_t i = 0; i < command_count; ++i) {
     const std::string name = std::string(command_names[i]) + "_button";
     s.buttons[i] = p.string(name);

@@ -31,6 +31,9 @@ struct InputSettings {
   double min_scale = 0.05, max_scale = 20.0;
   bool grab_rotates = true;      // one-hand grab moves and turns the workspace
   Layer initial_mode = Layer::automatic;
+  // Controller polls per second of a headless session on a runtime without
+  // frame timing there (Monado's XR_MND_headless), paced by the input itself.
+  double headless_poll_hz = 90.0;
 };
 
 std::vector<ParamSpec> input_param_specs();

@@ -16,18 +16,23 @@ class OpenXrInput : public Input {
   explicit OpenXrInput(const Params& p)
       : session_(openxr::settings_from_params(p), Workspace{}) {
     header_.units = "m";
-    header_.source = {{"input", "openxr"}, {"runtime", session_.runtime_name()}};
+    header_.source = {{"input", "openxr"},
+                      {"runtime", session_.runtime_name()},
+                      {"timing", session_.clock_timed() ? "runtime clock" : "xrWaitFrame"}};
   }
   RecordingHeader header() const override { return header_; }
+  // Waits for the controllers at most this long per call: a live input
+  // returns nothing now and then, so its caller can notice a stop request.
   std::optional<Event> next() override {
     if (pending_.empty() && !session_.ended())
-      for (auto& e : session_.next_events()) pending_.push_back(std::move(e));
+      for (auto& e : session_.next_events(std::chrono::milliseconds(50))) pending_.push_back(std::move(e));
     if (pending_.empty()) return std::nullopt;
     Event e = std::move(pending_.front());
     pending_.pop_front();
     return e;
   }
   bool finished() const override { return pending_.empty() && session_.ended(); }
+  void request_stop() override { session_.request_exit(); }
 
  private:
   openxr::HeadlessSession session_;

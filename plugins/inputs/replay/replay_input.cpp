@@ -12,7 +12,9 @@ using namespace sketchlab;
 
 // The whole file is read (and checked) up front; max_events truncates it.
 Recording read_truncated(const Params& p) {
-  Recording recording = read_recording(p.string("path"));
+  RecordingReadOptions options;
+  options.refuse_truncated = p.string("partial_last_line") == "refuse";
+  Recording recording = read_recording(p.string("path"), options);
   const auto limit = p.integer("max_events");
   if (limit >= 0 && static_cast<std::size_t>(limit) < recording.events.size())
     recording.events.resize(static_cast<std::size_t>(limit));
@@ -30,6 +32,9 @@ PluginDescriptor describe() {
        "recording file (JSON Lines) to play"},
       {"max_events", ParamType::integer, std::int64_t{-1}, -1, {}, {}, "",
        "stop after this many events (-1: play all)"},
+      {"partial_last_line", ParamType::choice, std::string("skip"), {}, {}, {"skip", "refuse"}, "",
+       "a last line without its newline (left by an interrupted write): skip it with a warning, "
+       "or refuse the recording"},
   };
   return input_descriptor<ReplayInput>("replay", "1.0", "plays a recorded session (JSON Lines)",
                                        std::move(specs));

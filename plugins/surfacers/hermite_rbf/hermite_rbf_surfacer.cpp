@@ -11,6 +11,7 @@
 #include "mesh_topology.hpp"
 #include "parallel_for.hpp"
 #include "point_tree.hpp"
+#include "sketchlab/plugin/budget.hpp"
 #include "stage_timer.hpp"
 #include "surface_quality.hpp"
 #include "surface_trim.hpp"
@@ -168,6 +169,7 @@ SurfaceResult surface_from_network(const Network& network, const HermiteRbfParam
     spacing = std::min(spacing, c.spacing);
   }
   const HermiteConstraints merged = merge_duplicates(picked, 0.5 * spacing);
+  check_budget();  // issue 17: the per-event time budget
   const double constraints_ms = timer.wall_ms(), constraints_cpu_ms = timer.cpu_ms();
   SurfaceResult r = surface_from_constraints(merged, samples, params, state);
   r.stats["curves"] = double(curves.size());

@@ -8,6 +8,7 @@
 
 #include "parallel_transport.hpp"
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/plugin/budget.hpp"
 
 namespace sketchlab::soapfilm {
 namespace {
@@ -177,6 +178,7 @@ std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_norma
   Vec3 normal_sum = start_normal.normalized();
   HalfEdge cur = start;
   while (true) {
+    check_budget();  // issue 17: the per-event time budget
     const auto next = turn(cur, normal);
     if (!next) return std::nullopt;
     if (*next == start) {

@@ -145,6 +145,16 @@ Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
       polyline, std::back_inserter(triangles),
       CGAL::parameters::use_delaunay_triangulation(params.delaunay_hole_filling));
   if (triangles.empty()) throw std::runtime_error("patch_mesh: boundary could not be triangulated");
+  {
+    // Issue 17: a boundary running back over itself (a cycle of coincident
+    // curves) encloses no area; remeshing its degenerate triangles crashed.
+    double area = 0.0, perimeter = 0.0;
+    auto at = [&](int i) { return boundary[static_cast<std::size_t>(i) % boundary.size()]; };
+    for (const auto& t : triangles) area += 0.5 * (at(t.second) - at(t.first)).cross(at(t.third) - at(t.first)).norm();
+    for (std::size_t i = 0; i < boundary.size(); ++i) perimeter += (at(int(i) + 1) - at(int(i))).norm();
+    if (!(area > 1e-9 * perimeter * perimeter))
+      throw std::runtime_error("patch_mesh: the boundary encloses no area (its curves run over each other)");
+  }
 
   SurfaceMesh sm;
   sm.reserve(static_cast<SurfaceMesh::size_type>(boundary.size()), 0, 0);

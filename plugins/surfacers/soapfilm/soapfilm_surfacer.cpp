@@ -10,6 +10,7 @@
 #include "manual_patch.hpp"
 #include "patch_mesh.hpp"
 #include "patch_upkeep.hpp"
+#include "sketchlab/plugin/budget.hpp"
 
 namespace sketchlab::soapfilm {
 
@@ -42,6 +43,7 @@ SurfaceUpdate soapfilm_update(const Sketch& sketch, const Edit& last, const Soap
   int failed = 0;
   PatchMeshTimings stages;  // summed over the patches (CPU ms)
   for (const auto& cycle : up.cycles_added) {
+    check_budget();  // issue 17: the per-event time budget
     PatchMeshTimings t;
     auto patch = make_patch(sketch.network, next, cycle, true, params, &t);
     stages.fill_ms += t.fill_ms;

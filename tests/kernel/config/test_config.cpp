@@ -144,7 +144,7 @@ TEST_CASE("an unknown key names file, line and the allowed keys", "[config]") {
                                 "  - corector: {plugin: freehand}\n");
   CHECK(error_of([&] { load_experiment(file); }) ==
         file.string() + ":3: unknown key 'corector' in a stack (allowed: name, input, corrector, "
-                        "surfacer)");
+                        "surfacer, time_budget)");
 
   const fs::path top = s.write("top.yaml", "recordings: [recs/a.jsonl]\nstack: []\n");
   CHECK(error_of([&] { load_experiment(top); }) ==
@@ -191,7 +191,7 @@ TEST_CASE("a stack without a corrector is an error naming the stack's line", "[c
                                 "    surfacer: soapfilm\n");
   CHECK(error_of([&] { load_experiment(file); }) ==
         file.string() + ":4: the stack has no 'corrector' (allowed: name, input, corrector, "
-                        "surfacer)");
+                        "surfacer, time_budget)");
   const fs::path no_stacks = s.write("none.yaml", "recordings: [recs/a.jsonl]\n");
   CHECK_THAT(error_of([&] { load_experiment(no_stacks); }),
              Catch::Contains("the experiment has no 'stacks' (allowed: experiment, recordings"));

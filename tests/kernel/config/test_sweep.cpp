@@ -79,3 +79,69 @@ TEST_CASE("stack_to_yaml reads back to the same stack", "[config][sweep]") {
   CHECK(back.corrector.plugin == "freehand");
   CHECK(std::get<std::string>(back.corrector.params.at("label")) == "true");
 }
+
+TEST_CASE("sweep errors name the sweep entry's file:line, not the command line", "[config][sweep][reliability]") {
+  // Issue 17, D8 (reproducers K1, K2).
+  const auto error_of = [](const fs::path& file) {
+    try {
+      expand_sweep(load_experiment(file));
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const fs::path k1 = write_experiment("k1", "sweep:\n  stacks.0..params.delta: [0.01, 0.02]\n");
+  CHECK(error_of(k1) == k1.string() +
+                            ":7: sweep key 'stacks.0..params.delta' has an empty key segment in "
+                            "'stacks.0..params.delta' (expected stacks.<index or *>.<path>, e.g. "
+                            "stacks.0.corrector.params.delta)");
+
+  // An out-of-range value is found when the plugin validates it: its location
+  // is the sweep entry.
+  const fs::path k2 = write_experiment("k2", "sweep:\n  stacks.0.corrector.params.delta: [0.01, 7]\n");
+  const auto cases = expand_sweep(load_experiment(k2));
+  REQUIRE(cases.size() == 3);
+  CHECK(cases[1].stack.corrector.param_locations.at("delta").to_string() == k2.string() + ":7");
+  try {
+    rethrow_param_error(ParamError("delta", "7 is out of range"), cases[1].stack.corrector);
+  } catch (const ConfigError& e) {
+    CHECK(std::string(e.what()) == k2.string() + ":7: plugin 'freehand': 7 is out of range");
+  }
+  // A value that breaks the structure names the entry too.
+  const fs::path bad = write_experiment("structure", "sweep:\n  stacks.0.corrector.plugin: ['']\n");
+  CHECK_THAT(error_of(bad), Catch::StartsWith(bad.string() + ":7: ") && Catch::Contains("non-empty string"));
+  // Command-line overrides still say so.
+  const auto overridden =
+      load_experiment(k2, {parse_override("stacks.1.corrector.params.delta=0.05")});
+  CHECK(overridden.stacks[1].corrector.param_locations.at("delta").to_string() == "command line");
+}
+
+TEST_CASE("a sweep too large to run is refused up front, naming its entries", "[config][sweep][reliability]") {
+  const fs::path file = write_experiment(
+      "huge", "sweep:\n  stacks.0.corrector.params.p0: {from: 0, to: 9999, step: 1}\n"
+              "  stacks.0.corrector.params.p1: {from: 0, to: 9999, step: 1}\n");
+  try {
+    expand_sweep(load_experiment(file));
+    FAIL("no error");
+  } catch (const ConfigError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith("sweep entries at " + file.string() + ":7, " + file.string() +
+                                           ":8: the sweep has 1e+08 stack variants") &&
+                             Catch::Contains("at most 1e+06"));
+  }
+}
+
+TEST_CASE("stacks take a time budget per event", "[config]") {
+  const fs::path dir = fs::temp_directory_path() / "sketchlab_test_sweep_budget";
+  fs::create_directories(dir);
+  const fs::path file = dir / "s.yaml";
+  std::ofstream(file) << "corrector: freehand\ntime_budget: 2.5\n";
+  CHECK(load_stack(file).time_budget == 2.5);
+  CHECK(load_stack(file, {parse_override("time_budget=0.5")}).time_budget == 0.5);
+  std::ofstream(dir / "r.yaml") << stack_to_yaml(load_stack(file));
+  CHECK(load_stack(dir / "r.yaml").time_budget == 2.5);
+  for (const char* bad : {"0", "-1", "1e9", "soon", "[1]"}) {
+    INFO(bad);
+    CHECK_THROWS_WITH(load_stack(file, {parse_override(std::string("time_budget=") + bad)}),
+                      Catch::Contains("'time_budget' must be a number of seconds in (0, 86400]"));
+  }
+}

@@ -6,6 +6,7 @@
 
 #include "kernel/network/random_network.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "network/spatial_index.hpp"
 #include "sketchlab/network.hpp"
 
 using namespace sketchlab;
@@ -212,4 +213,38 @@ TEST_CASE("proximity queries reject bad arguments and handle the empty network",
   }
   CHECK(net.curves_near(Vec3(1, -1, 0), 0.5).empty());
   CHECK(net.keypoints_near(Vec3(0, 0, 0), 1e-9).size() == 1);  // the arclength midpoint
+}
+
+TEST_CASE("a glitch segment kilometres away stays a few index entries and queries stay exact",
+          "[network][proximity][reliability]") {
+  // Issue 17, D3 (reproducer H1): a 30 cm sketch of centimetre segments plus
+  // one tracking-glitch sample 10 km away used to cut the glitch segment into
+  // chunks of ~10 m, each filling a cube of 1000^3 one-centimetre cells.
+  std::mt19937_64 rng(17);
+  Network net = random_network(rng, 300);
+  Edit e;
+  const double far_away[] = {1e3, 1e4, 1e6};
+  for (const double far : far_away) {
+    NetworkCurve glitch;
+    glitch.id = net.next_curve_id() + e.curves_added.size();
+    glitch.curve = make_line(Vec3(0.14, 0.14, 0.1), Vec3(far, far, far));
+    glitch.keypoints = default_keypoints(glitch.curve);
+    e.curves_added.push_back(glitch);
+  }
+  net.apply(e);
+  CHECK(check_point_queries(net, rng, 100) > 50);
+  CHECK(check_polyline_queries(net, rng, 12) > 2);
+  // Far along the glitch lines only they answer.
+  const auto hits = net.curves_near(Vec3(5e3, 5e3, 5e3), 1.0);
+  REQUIRE(hits.size() == 2);
+
+  SpatialIndex index;
+  for (const auto& [id, c] : net.curves()) index.insert_curve(c);
+  // Each glitch segment is cut into at most 1024 chunks, all too wide for the
+  // grid; the 300 ordinary curves fill a few thousand cells.
+  CHECK(index.oversized_chunks() <= 3 * 1024);
+  CHECK(index.occupied_cells() < 100000);
+  for (const auto& [id, c] : net.curves()) index.erase_curve(id);
+  CHECK(index.oversized_chunks() == 0);
+  CHECK(index.occupied_cells() == 0);
 }

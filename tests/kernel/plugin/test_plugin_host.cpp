@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 
 #include "sketchlab/plugin/plugin_host.hpp"
 
@@ -80,7 +83,7 @@ TEST_CASE("the fixture directory: the good plugins load, each broken one is repo
         "(m)");
 }
 
-TEST_CASE("a file that is not a library reports the loader's message", "[plugin]") {
+TEST_CASE("a file that is not a library is refused before the loader sees it", "[plugin]") {
   const fs::path dir = fs::temp_directory_path() / "sketchlab_test_plugin_host_garbage";
   fs::create_directories(dir);
   const fs::path file = dir / "sketchlab_corrector_garbage.so";
@@ -92,10 +95,92 @@ TEST_CASE("a file that is not a library reports the loader's message", "[plugin]
   CHECK_FALSE(host.load_file(file));
   REQUIRE(host.errors().size() == 1);
   CHECK(host.errors()[0].path == file);
-  const std::string reason = host.errors()[0].reason;
-  CHECK_THAT(reason, Catch::StartsWith("cannot load library: "));
-  CHECK(reason.size() > std::string("cannot load library: ").size());
+  CHECK(host.errors()[0].reason == "not an ELF shared library (no ELF header)");
   fs::remove_all(dir);
+}
+
+TEST_CASE("a library the loader refuses reports the loader's message", "[plugin]") {
+  // A valid ELF shared object that is no plugin and needs a missing library.
+  const fs::path dir = fs::temp_directory_path() / "sketchlab_test_plugin_host_needs";
+  fs::create_directories(dir);
+  const fs::path file = dir / "sketchlab_corrector_needs.so";
+  fs::copy_file(fixture("good"), file, fs::copy_options::overwrite_existing);
+  // Rename the kernel dependency in the dynamic string table: same length, so
+  // every offset stays valid.
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto at = bytes.find("libsketchlab.so");
+  REQUIRE(at != std::string::npos);
+  bytes.replace(at, 15, "libnot_there.so");
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  PluginHost host;
+  CHECK_FALSE(host.load_file(file));
+  REQUIRE(host.errors().size() == 1);
+  CHECK_THAT(host.errors()[0].reason, Catch::StartsWith("cannot load library: ") &&
+                                          Catch::Contains("libnot_there.so"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a truncated library is refused before dlopen, whatever its length", "[plugin][reliability]") {
+  // Issue 17, D1 (reproducer P1): half a plugin on the search path made
+  // dlopen map segments past the end of the file, and the host died of
+  // SIGBUS. Every prefix of a real plugin must be refused with a reason.
+  const fs::path dir = fs::temp_directory_path() / "sketchlab_test_plugin_host_truncated";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string bytes;
+  {
+    std::ifstream in(fixture("good"), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  REQUIRE(bytes.size() > 4096);
+  std::vector<std::size_t> lengths = {0, 3, 63, 64, bytes.size() / 2, bytes.size() - 1};
+  for (int k = 1; k < 40; ++k) lengths.push_back(bytes.size() * k / 40);
+  PluginHost host;
+  for (std::size_t n : lengths) {
+    const fs::path file = dir / ("sketchlab_corrector_cut" + std::to_string(n) + ".so");
+    std::ofstream(file, std::ios::binary) << bytes.substr(0, n);
+    CHECK_FALSE(host.load_file(file));
+    const std::string reason = reason_for(host, file);
+    INFO(n << " bytes: " << reason);
+    CHECK((reason.rfind("truncated or damaged: ", 0) == 0 ||
+           reason == "not an ELF shared library (no ELF header)"));
+  }
+  CHECK(host.plugins().empty());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("entries named like plugins that are not files are reported, not skipped", "[plugin]") {
+  const fs::path dir = fs::temp_directory_path() / "sketchlab_test_plugin_host_dirs";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sketchlab_corrector_folder.so");
+  PluginHost host;
+  host.load_directories({dir});
+  REQUIRE(host.errors().size() == 1);
+  CHECK(host.errors()[0].path == dir / "sketchlab_corrector_folder.so");
+  CHECK(host.errors()[0].reason == "is a directory, not a plugin library");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the probe loads each library in a child first: a crash at load time is reported", "[plugin]") {
+  PluginLoadOptions options;
+  options.probe = true;
+  PluginHost host(options);
+  const fs::path crashing =
+      fixture_dir / "crashes_at_load" / "sketchlab_corrector_crashes_at_load.so";
+  CHECK_FALSE(host.load_file(crashing));
+  CHECK(reason_for(host, crashing) ==
+        "loading it killed the probe process with signal " + std::to_string(SIGBUS) + " (" +
+            strsignal(SIGBUS) + ")");
+  CHECK_FALSE(is_mapped(crashing));
+  // Well-behaved plugins pass the probe and load as usual.
+  CHECK(host.load_file(fixture("good")));
+  CHECK_FALSE(host.load_file(fixture("wrong_abi")));
+  CHECK(reason_for(host, fixture("wrong_abi")) ==
+        "built for ABI 7, host has " + std::to_string(plugin_abi_version));
 }
 
 TEST_CASE("file names must follow sketchlab_<kind>_<name>.so and duplicates are skipped", "[plugin]") {

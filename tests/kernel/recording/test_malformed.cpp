@@ -24,10 +24,10 @@ std::string stroke_with_samples(const std::string& samples) {
 }
 
 // Parses header + good stroke + undo + `line` (line 4) and returns the error.
-RecordingError error_for(const std::string& text) {
+RecordingError error_for(const std::string& text, const RecordingReadOptions& options = {}) {
   std::istringstream in(text);
   try {
-    parse_recording(in, "bad.jsonl");
+    parse_recording(in, "bad.jsonl", options);
   } catch (const RecordingError& e) {
     return e;
   }
@@ -109,14 +109,23 @@ TEST_CASE("empty and degenerate strokes are rejected", "[recording][malformed]")
         {"samples[0]", "5 numbers"});
 }
 
-TEST_CASE("a truncated last line says truncated", "[recording][malformed]") {
+TEST_CASE("refuse_truncated: a last line without its newline says truncated", "[recording][malformed]") {
   const std::string body = header + "\n" + good_stroke + "\n" + undo + "\n";
+  RecordingReadOptions refuse;
+  refuse.refuse_truncated = true;
   // Interrupted in the middle of a stroke.
-  check(error_for(body + R"({"t":3.0,"type":"stroke","id":5,"samp)"), 4,
+  check(error_for(body + R"({"t":3.0,"type":"stroke","id":5,"samp)", refuse), 4,
         {"truncated", "not complete JSON"});
   // Complete JSON but no final newline: still an interrupted write.
-  check(error_for(header + "\n" + good_stroke + "\n" + undo), 3, {"truncated"});
+  check(error_for(header + "\n" + good_stroke + "\n" + undo, refuse), 3, {"truncated"});
+  // A header cut short leaves nothing to read, whatever the options.
   check(error_for(header), 1, {"truncated"});
+  check(error_for(header.substr(0, 40)), 1, {"truncated", "not complete JSON"});
+}
+
+TEST_CASE("sample times running backwards are refused with the sample named", "[recording][malformed]") {
+  check(error_on_line4(stroke_with_samples("[[0.0,0.0,0.0,3.0,1.0],[0.1,0.0,0.0,2.5,1.0]]")), 4,
+        {"samples[1][3]", "earlier than the previous sample's 3.0", "must not decrease"});
 }
 
 TEST_CASE("unknown event types list the allowed ones", "[recording][malformed]") {

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -431,6 +432,42 @@ TEST_CASE("the grid near the hand and the mirror plane are drawn when the worksp
   // The mirror plane x = 0 tints what lies behind it, away from grid points.
   CHECK(differs(Vec3(0.0, 1.45, -0.45), 8, 0));
   CHECK_FALSE(differs(Vec3(0.45, 1.75, -0.45), 8, 0));  // beyond the plane's edge, off the grid
+  fs::remove_all(dir);
+}
+
+TEST_CASE("SIGTERM ends a VR session like Ctrl-C: recording closed, figures printed", "[openxr][viewer][reliability]") {
+  // Issue 17: vr handled SIGINT only; SIGTERM killed it with no figures.
+  test::ensure_display();
+  const auto dir = fresh_dir("sigterm");
+  const auto script = dir / "script.txt";
+  {
+    std::ofstream s(script);
+    for (int i = 0; i < 1000; ++i)
+      s << "frame 10 right=" << 0.001 * i << ",1.2,-0.3 right/input/trigger/value=0.5\n";
+  }
+  const CliRun r = test::run_until_then_signal(vr_command(script, dir, SKETCHLAB_TEST_XR_RUNTIME_JSON),
+                                               dir / "log.txt", "Ctrl-C ends the session", SIGTERM, 120.0, 1.0);
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.output, Catch::Contains("events recorded in") && Catch::Contains(" frames, "));
+  const Recording rec = read_recording(dir / "vr.jsonl");
+  CHECK(rec.events.size() >= 1);  // the stroke being drawn
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vr warns at start when the stack's corrector corrects 2D strokes only", "[openxr][viewer]") {
+  test::ensure_display();
+  const auto dir = fresh_dir("warn2d");
+  const auto script = dir / "script.txt";
+  std::ofstream(script) << "frame 5\n";
+  const CliRun r = run_captured("XR_RUNTIME_JSON=" SKETCHLAB_TEST_XR_RUNTIME_JSON " SKETCHLAB_XR_SCRIPT=" +
+                                script.string() + " " SKETCHLAB_CLI " vr " +
+                                test::source_path("configs/stacks/justdrawit.yaml") + " -o " +
+                                (dir / "vr.jsonl").string());
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.output, Catch::Contains("warning: ") && Catch::Contains("corrector 'justdrawit' corrects 2D (tablet) "
+                                                                          "strokes only"));
   fs::remove_all(dir);
 }
 

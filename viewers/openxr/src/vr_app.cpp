@@ -1,9 +1,7 @@
 #include "sketchlab/vr/vr_app.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <ctime>
 #include <fstream>
 #include <map>
@@ -15,6 +13,7 @@
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/run/stack.hpp"
+#include "sketchlab/run/stop_signals.hpp"
 #include "sketchlab/viewer/display.hpp"
 #include "vr_scene.hpp"
 #include "xr_actions.hpp"
@@ -22,23 +21,6 @@
 
 namespace sketchlab::vr {
 namespace {
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted = true; }
-
-// Ctrl-C asks the runtime to end the session, so the loop leaves through
-// the normal STOPPING -> EXITING path and the recording is closed.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    g_interrupted = false;
-    previous_ = std::signal(SIGINT, on_interrupt);
-  }
-  ~InterruptGuard() { std::signal(SIGINT, previous_); }
-
- private:
-  void (*previous_)(int) = SIG_DFL;
-};
 
 std::filesystem::path default_recording() {
   const std::time_t now = std::time(nullptr);
@@ -85,6 +67,10 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   const StackConfig stack = load_stack(options.config, overrides);
   const openxr::InputSettings settings = input_settings(stack, err);
   StackInstance instance = instantiate_stack(stack, host);
+  if (instance.corrector->stroke_space() == StrokeSpace::pixels)
+    err << "sketchlab vr: warning: " << stack.corrector.location.to_string() << ": corrector '"
+        << stack.corrector.plugin << "' corrects 2D (tablet) strokes only and will refuse every VR "
+        << "stroke; the strokes are still recorded\n";
   if (!(options.grid_spacing >= 0.0 && options.grid_spacing < 100.0))
     throw std::invalid_argument("--grid: spacing must be in [0, 100) m, got " + std::to_string(options.grid_spacing));
   const std::filesystem::path recording = options.recording.empty() ? default_recording() : options.recording;
@@ -123,13 +109,16 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   out << "sketchlab vr: drawing with stack '" << stack.name << "' on OpenXR runtime '" << xr.runtime_name()
       << "', recording to " << recording.string() << " (Ctrl-C ends the session)\n"
       << std::flush;
-  const InterruptGuard interrupt;
+  // Ctrl-C or SIGTERM asks the runtime to end the session, so the loop
+  // leaves through the normal STOPPING -> EXITING path, the recording is
+  // closed and the figures printed.
+  const StopSignals stop;
   XrTime start = 0;
   double seconds = 0.0;
   bool lost = false;
   std::vector<double> frame_ms;  // render-thread time per frame (input, scene, both eyes)
   for (;;) {
-    if (g_interrupted) {
+    if (StopSignals::stop_requested()) {
       if (!xr.running()) break;
       xr.request_exit();
     }

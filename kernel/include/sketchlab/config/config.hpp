@@ -7,6 +7,7 @@
 //   input:     {plugin: replay}                     # optional in experiments
 //   corrector: {plugin: freehand, params: {delta: 0.02}}
 //   surfacer:  {plugin: soapfilm}                   # optional
+//   time_budget: 60               # optional: seconds per event (plugin/budget.hpp)
 //
 // Experiment file:
 //
@@ -53,6 +54,9 @@ struct StackConfig {
   std::optional<PluginChoice> input;  // default: replay
   PluginChoice corrector;
   std::optional<PluginChoice> surfacer;
+  // Seconds of corrector + surfacer time per event, in (0, 86400]; unset:
+  // default_time_budget_s.
+  std::optional<double> time_budget;
   SourceLocation location;
 };
 
@@ -104,7 +108,9 @@ struct SweepCase {
 // The stack variants of an experiment: each stack once when no sweep axis
 // applies to it, else once per point of the cartesian product of its axes (in
 // axis order, last axis fastest). Each variant is validated like a config
-// (errors name the sweep entry's file:line).
+// (errors name the sweep entry's file:line). The file is read once; a sweep
+// of more than max_sweep_points points in all is refused, naming its entries.
+inline constexpr double max_sweep_points = 1e6;
 std::vector<SweepCase> expand_sweep(const ExperimentConfig& config);
 
 // "a.b.0.c=value" -> applied to the tree. Throws ConfigError on a malformed
@@ -112,6 +118,9 @@ std::vector<SweepCase> expand_sweep(const ExperimentConfig& config);
 struct Override {
   std::vector<std::string> path;
   std::string value;  // YAML text
+  // Where it was given: the command line (the default), or the sweep entry
+  // that produced it. Errors about the value name this place.
+  SourceLocation origin;
 };
 Override parse_override(const std::string& text);
 

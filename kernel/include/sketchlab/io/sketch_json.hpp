@@ -6,6 +6,7 @@
 // numbers in shortest round-trip form, so equal sketches give equal bytes.
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sketchlab/session.hpp"
@@ -17,7 +18,11 @@ namespace sketchlab {
 std::string sketch_to_json(const Sketch& sketch, const std::vector<StepReport>* steps = nullptr);
 
 // Reads a sketch file back (workspace and network; strokes and history are
-// not stored). Throws std::runtime_error "file: field: reason" on bad input.
+// not stored). Throws std::runtime_error "file: field: reason" on bad input,
+// including ids, versions and face indices that are not integers in range
+// (1.5, -1, 1e300) and faces naming vertices the mesh does not have.
 Sketch read_sketch_json(const std::filesystem::path& file);
+// The same from the file's text; `name` is used as the file name in errors.
+Sketch parse_sketch_json(std::string_view text, const std::string& name);
 
 }  // namespace sketchlab

@@ -19,6 +19,10 @@ class Input {
   // Non-empty once the input failed (device lost, unreadable file); it then
   // reports finished(). Events already returned stay valid.
   virtual std::string error() const { return {}; }
+  // Asks a live input to end (the user stopped the command): it finishes what
+  // is in progress (a stroke being drawn comes out as an event) and then
+  // reports finished(). Inputs that end by themselves ignore it.
+  virtual void request_stop() {}
 };
 
 }  // namespace sketchlab

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "sketchlab/plugin/budget.hpp"
 #include "sketchlab/plugin/corrector.hpp"
 #include "sketchlab/plugin/input.hpp"
 #include "sketchlab/plugin/params.hpp"
@@ -33,7 +34,10 @@ namespace sketchlab {
 // Bumped whenever any type crossing the plugin boundary changes layout.
 // 2: Surfacer::recompute and RecomputeSurfaceEvent.
 // 3: Stroke::draw_plane and Corrector::stroke_space.
-inline constexpr std::uint32_t plugin_abi_version = 3;
+// 4: the per-event time budget (budget.hpp): BudgetExceeded crosses the
+//    boundary and the wrappers below turn it into the call's error;
+//    Input::request_stop.
+inline constexpr std::uint32_t plugin_abi_version = 4;
 
 enum class PluginKind { corrector, surfacer, input };
 std::string_view to_string(PluginKind kind);
@@ -68,6 +72,8 @@ template <class F, class R>
 R guarded(F&& f, R on_error, std::string R::*error_field) {
   try {
     return f();
+  } catch (const BudgetExceeded& e) {
+    on_error.*error_field = e.message();
   } catch (const std::exception& e) {
     on_error.*error_field = e.what();
   } catch (...) {
@@ -115,6 +121,15 @@ class GuardedInput final : public T {
       error_ = "unknown exception";
     }
     return std::nullopt;
+  }
+  void request_stop() override {
+    try {
+      T::request_stop();
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    } catch (...) {
+      error_ = "unknown exception";
+    }
   }
   bool finished() const override { return !error_.empty() || T::finished(); }
   std::string error() const override { return error_.empty() ? T::error() : error_; }

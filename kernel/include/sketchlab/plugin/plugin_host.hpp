@@ -1,13 +1,24 @@
 #pragma once
 // Finds, checks and loads plugin libraries (Boost.DLL).
 //
-// A plugin file is a shared library named sketchlab_<kind>_<name>.so. The host
-// reads its PluginHeader, checks the ABI version and build fingerprint before
-// anything else, then the descriptor (kind and name match the file name,
-// parameter defaults satisfy their own specs). A library failing any check is
-// recorded in errors() with its path and reason; the others still load.
-// Libraries are never unloaded before the host and every object they created
-// are gone: objects hold a reference to their library.
+// A plugin file is a shared library named sketchlab_<kind>_<name>.so. Before
+// dlopen() the host checks the file itself: a regular file holding an ELF
+// shared object for this machine whose segments all lie inside the file (a
+// truncated library would otherwise kill the process with SIGBUS inside the
+// loader). After loading it reads the PluginHeader, checks the ABI version and
+// build fingerprint before anything else, then the descriptor (kind and name
+// match the file name, parameter defaults satisfy their own specs). A library
+// failing any check is recorded in errors() with its path and reason; the
+// others still load. Libraries are never unloaded before the host and every
+// object they created are gone: objects hold a reference to their library.
+//
+// What the checks cannot stop: a library's load-time code (static
+// constructors, ELF init functions, the entry point) runs inside the host
+// with its rights, and so does every plugin call. PluginLoadOptions::probe
+// runs the load-time code in a child process first, so a library that
+// crashes or hangs while loading is reported instead of taking the host down;
+// it is no sandbox for malicious code (README.md, "Broken and untrusted plugin files").
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -34,9 +45,20 @@ struct PluginError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+struct PluginLoadOptions {
+  // Load every library once in a forked child before loading it here (one
+  // fork + dlopen per library; see README.md, "Broken and untrusted plugin
+  // files").
+  bool probe = false;
+  std::chrono::milliseconds probe_timeout{10000};
+  // probe = true when the environment sets SKETCHLAB_PLUGIN_PROBE=1.
+  static PluginLoadOptions from_environment();
+};
+
 class PluginHost {
  public:
-  PluginHost() = default;
+  explicit PluginHost(PluginLoadOptions options = PluginLoadOptions::from_environment())
+      : options_(options) {}
 
   // The build tree's plugin directory, the install tree's
   // (<exe>/../lib/sketchlab/plugins), then each entry of SKETCHLAB_PLUGIN_PATH
@@ -45,7 +67,8 @@ class PluginHost {
 
   // Loads every sketchlab_*.so in the directories (sorted by file name). A
   // plugin name already loaded from an earlier directory is skipped (first
-  // wins) and noted in errors().
+  // wins) and noted in errors(), as is an entry so named that is not a
+  // regular file (a directory, a FIFO).
   void load_directories(const std::vector<std::filesystem::path>& dirs);
   // Loads one library; returns false and records the reason on failure.
   bool load_file(const std::filesystem::path& file);
@@ -65,6 +88,7 @@ class PluginHost {
                                     const std::map<std::string, ParamValue>& params) const;
 
  private:
+  PluginLoadOptions options_;
   std::vector<LoadedPlugin> plugins_;
   std::vector<PluginLoadError> errors_;
 };

@@ -50,6 +50,11 @@
 
 namespace sketchlab {
 
+// The format's bounds on magnitudes: coordinates (metres or pixels) and
+// times (seconds). Sessions refuse strokes beyond them too, whoever made them.
+inline constexpr double recording_max_coordinate = 1e6;
+inline constexpr double recording_max_time = 1e9;
+
 // One line (without the trailing '\n'). Throws std::invalid_argument with the
 // reason when the event could not be read back (non-finite or absurd values,
 // an invalid stroke or curve), so nothing unreadable is ever written.

@@ -1,8 +1,12 @@
 #pragma once
 // Writes recordings (format: event_json.hpp). Live sessions append each event
-// as it happens; every line is flushed, so a crash loses at most the stroke in
-// progress.
-#include <cstdio>
+// as it happens. Each line goes to the file in one write(2) (continued only
+// after a short write), so a crash loses at most the stroke in progress; a
+// process killed inside that call can leave a partial last line, which the
+// reader skips with a warning. A failed write (disk full, file size limit)
+// is cut back off the file before the error is thrown: the file then still
+// ends with a complete line and later appends may succeed.
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
@@ -23,21 +27,26 @@ class RecordingWriter {
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;
 
-  // Writes one line and flushes. Throws std::invalid_argument (writing
-  // nothing) for an event the reader would reject, including one earlier than
-  // the previous event; std::runtime_error on an I/O failure or after close().
+  // Writes one line. Throws std::invalid_argument (writing nothing) for an
+  // event the reader would reject, including one earlier than the previous
+  // event; std::runtime_error on an I/O failure (the partial line removed
+  // again; when even that fails the writer closes, leaving the partial line
+  // last) or after close().
   void append(const Event& event);
 
-  // Flushes and closes; further appends throw. Called by the destructor.
+  // Closes; further appends throw. Called by the destructor.
   void close();
 
   const std::filesystem::path& path() const { return path_; }
   std::size_t lines_written() const { return lines_; }
+  // Bytes of complete lines in the file.
+  std::uint64_t bytes_written() const { return bytes_; }
 
  private:
   std::filesystem::path path_;
-  std::FILE* file_ = nullptr;
+  int fd_ = -1;
   std::size_t lines_ = 0;
+  std::uint64_t bytes_ = 0;
   std::optional<double> last_time_;
   void write_line(const std::string& line);
 };

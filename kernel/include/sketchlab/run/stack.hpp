@@ -16,6 +16,7 @@ struct StackInstance {
   std::string name;
   std::shared_ptr<Corrector> corrector;
   std::shared_ptr<Surfacer> surfacer;  // may be null
+  double time_budget_s = default_time_budget_s;  // per event (StackConfig::time_budget)
 };
 
 // Creates the corrector and surfacer of `stack`. Parameter errors become

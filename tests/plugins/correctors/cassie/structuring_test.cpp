@@ -108,7 +108,7 @@ TEST_CASE("A nearly planar stroke becomes planar and snaps to an axis plane", "[
   REQUIRE(k);
   CHECK(k->enforced);
   CHECK((k->target - Vec3::UnitZ()).norm() < 1e-12);
-  const Curve& in = correct_stroke(s, sketch, [] { CassieParams q; q.planarity = false; return q; }()).edit.curves_added[0].curve;
+  const Curve in = correct_stroke(s, sketch, [] { CassieParams q; q.planarity = false; return q; }()).edit.curves_added[0].curve;
   double before = 0, after = 0;
   auto spread = [](const Curve& c) {
     double lo = 1e9, hi = -1e9;

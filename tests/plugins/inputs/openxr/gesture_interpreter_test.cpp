@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "gesture_interpreter.hpp"
+#include "sketchlab/recording/event_json.hpp"
 
 using namespace sketchlab;
 using namespace sketchlab::openxr;
@@ -153,4 +154,24 @@ TEST_CASE("non-finite input is ignored, never recorded", "[openxr]") {
   const auto events = run(g, {at(0, {0, 1, 0}, 1.0), bad, at(2, {0.1, 1, 0}, 1.0), at(3, {0.1, 1, 0}, 0.0)});
   REQUIRE(events.size() == 1);
   for (const auto& s : std::get<StrokeEvent>(events[0].payload).stroke.samples) CHECK(s.position.allFinite());
+}
+
+TEST_CASE("absurd poses and times from a glitching runtime never reach an event", "[openxr][reliability]") {
+  // Found by fuzz/fuzz_openxr_input: a hand reported 1e300 m away made a
+  // delete_near event the recording format refuses.
+  GestureInterpreter g(InputSettings{}, Workspace{});
+  std::vector<ControllerFrame> frames;
+  for (int i = 0; i < 10; ++i) frames.push_back(at(i, {0.01 * i, 1.5, 0.0}, 0.7));
+  frames[3].hands[1].aim.position.x() = -1e300;         // absurd position
+  frames[5].hands[1].aim.orientation.coeffs().setZero();  // no rotation at all
+  frames[6].time = 2e9;                                   // beyond the format's times
+  frames.push_back(at(10, {0.1, 1.5, 0.0}, 0.0));
+  ControllerFrame press = at(11, Vec3(1e300, 0, 0));
+  press.buttons[static_cast<std::size_t>(Command::delete_nearest)] = true;
+  frames.push_back(press);
+  const auto events = run(g, frames);
+  REQUIRE(events.size() == 1);
+  const auto& stroke = std::get<StrokeEvent>(events[0].payload).stroke;
+  CHECK(stroke.samples.size() == 7);  // frames 3 and 5 lost tracking, 6 is in the future
+  for (const Event& e : events) CHECK_NOTHROW(to_json_line(e));
 }

@@ -2,6 +2,8 @@
 // loader and the test runtime: `sketchlab record --input openxr`.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -57,6 +59,62 @@ TEST_CASE("record --input openxr reads the scripted controllers through the load
     CHECK(stroke.samples[i].pressure == Approx(0.5));
   }
   CHECK(std::holds_alternative<UndoEvent>(rec.events[1].payload));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("on a Monado-like headless runtime record skips the frame functions and uses its clock",
+          "[openxr][reliability]") {
+  // Issue 17: Monado returns from xrWaitFrame at once with display time 0 in
+  // headless sessions, and its xrBeginFrame fails without a counted wait:
+  // record used to fail on its first frame.
+  const auto dir = fresh_dir("monado");
+  const auto script = dir / "script.txt";
+  {
+    std::ofstream s(script);
+    s << "option monado_headless 1\nframe 3 right=0,1.2,-0.3\n";
+    for (int i = 0; i <= 10; ++i) s << "frame right=" << 0.02 * i << ",1.2,-0.3 right/input/trigger/value=0.5\n";
+    s << "frame 2 right/input/trigger/value=0\n";
+  }
+  const auto out = dir / "rec.jsonl";
+  const CliRun r = run_captured(env(script) + SKETCHLAB_CLI " record --input openxr --param headless_poll_hz=1000 -o " +
+                                out.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const Recording rec = read_recording(out);
+  CHECK(rec.header.source.at("timing") == "runtime clock");
+  REQUIRE(rec.events.size() == 1);
+  const auto& stroke = std::get<StrokeEvent>(rec.events[0].payload).stroke;
+  REQUIRE(stroke.samples.size() == 11);
+  for (int i = 0; i <= 10; ++i) {
+    CHECK((stroke.samples[i].position - Vec3(0.02 * i, 1.2, -0.3)).norm() < 1e-6);
+    // One 90 Hz tick of the runtime's clock per poll, from the first poll.
+    CHECK(stroke.samples[i].time == Approx((3 + i) / 90.0).margin(1e-9));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("SIGTERM stops record cleanly: the stroke being drawn is kept", "[openxr][reliability]") {
+  const auto dir = fresh_dir("sigterm");
+  const auto script = dir / "script.txt";
+  {
+    // About 100 s of drawing at 1000 polls per second: it must be stopped.
+    std::ofstream s(script);
+    s << "option monado_headless 1\nframe 3 right=0,1.2,-0.3\n";
+    for (int i = 0; i < 2000; ++i)
+      s << "frame 50 right=" << 0.2 * std::cos(0.01 * i) << ",1.2," << 0.2 * std::sin(0.01 * i)
+        << " right/input/trigger/value=0.5\n";
+  }
+  const auto out = dir / "rec.jsonl";
+  const auto log = dir / "log.txt";
+  const CliRun r = test::run_until_then_signal(
+      env(script) + SKETCHLAB_CLI " record --input openxr --param headless_poll_hz=1000 -o " + out.string(), log,
+      "(Ctrl-C stops)", SIGTERM, 60.0);
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.output, Catch::Contains("stopping (signal 15)") && Catch::Contains("1 events"));
+  const Recording rec = read_recording(out);
+  REQUIRE(rec.events.size() == 1);
+  CHECK(std::get<StrokeEvent>(rec.events[0].payload).stroke.samples.size() > 2);
   std::filesystem::remove_all(dir);
 }
 
