@@ -14,6 +14,7 @@ using namespace sketchlab;
 class FreehandCorrector : public Corrector {
  public:
   explicit FreehandCorrector(const Params& p) {
+    if (p.string("rules") == "cassie_app") params_ = cassie_app_preprocess();
     params_.delta = p.real("delta");
     params_.fit_error_factor = p.real("fit_error");
     params_.max_g1_angle = p.real("sharp_angle");
@@ -33,6 +34,9 @@ class FreehandCorrector : public Corrector {
 PluginDescriptor describe() {
   const PreprocessParams d;
   std::vector<ParamSpec> specs{
+      {"rules", ParamType::choice, std::string("cassie_app"), {}, {}, {"cassie_app", "sketchlab"}, "",
+       "cassie_app: the CASSIE app's Freehand preprocessing (input filtering, line test, corners "
+       "and Schneider fit as the app); sketchlab: the thesis §3.2.2 reading (preprocess.hpp)"},
       {"delta", ParamType::real, d.delta, 0.001, 0.5, {}, "m",
        "small distance δ at zoom 1 (CASSIE default 0.02); thresholds are δ/s"},
       {"fit_error", ParamType::real, d.fit_error_factor, 0.01, 5.0, {}, "δ",
