@@ -27,6 +27,7 @@ Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<d
   ip.min_length = params.app_min_length_factor * d;
   ip.min_duration = params.app_min_duration;
   ip.end_trim = params.app_end_trim;
+  if (!params.app_filter_input) ip = {0.0, 0.0, 0.0, 0.0};
   const FilteredInput in = filter_input(points, times, ip);
   if (in.dropped) {
     throw std::invalid_argument("preprocess_stroke: dropped as the CASSIE app does: " + in.reason);

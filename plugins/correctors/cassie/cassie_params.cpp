@@ -111,6 +111,9 @@ std::vector<ParamSpec> param_specs() {
       {"preprocess", ParamType::choice, std::string("cassie_app"), {}, {}, {"cassie_app", "sketchlab"}, "",
        "cassie_app: the app's input filtering, line test, hooks, corners and fit (items 1-4); "
        "sketchlab: the thesis §3.2.2 reading (kernel preprocess.hpp)"},
+      flag("filter_input", d.preprocess.app_filter_input,
+           "drop samples closer than 0.1δ, strokes too short or brief, samples of the first and last "
+           "0.02 s (item 1; cassie_app preprocessing)"),
       real("fit_error", d.preprocess.fit_error_factor, 0.01, 5.0, "δ",
            "poly-Bézier fitting tolerance (item 4: 0.5δ)"),
       real("sharp_angle", d.preprocess.max_g1_angle, 0.05, pi, "rad",
@@ -165,6 +168,7 @@ CassieParams params_from(const Params& p) {
   c.preprocess.max_g1_angle = p.real("sharp_angle");
   c.preprocess.detect_lines = p.boolean("detect_lines");
   c.preprocess.remove_hooks = p.boolean("remove_hooks");
+  c.preprocess.app_filter_input = p.boolean("filter_input");
   return c;
 }
 

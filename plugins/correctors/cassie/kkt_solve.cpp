@@ -140,7 +140,9 @@ SolveResult solve_constrained(const SolveProblem& pr) {
   Eigen::SparseMatrix<double> am(n, n), cm(nc, n);
   am.setFromTriplets(a.begin(), a.end());
   cm.setFromTriplets(c.begin(), c.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(am);
+  // A is block tridiagonal (3×3 blocks, control points in curve order): the
+  // natural ordering has no fill, so no reordering is computed.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(am);
   if (ldlt.info() != Eigen::Success) return res;
   const Eigen::VectorXd dv = Eigen::Map<const Eigen::VectorXd>(d.data(), nc);
   Eigen::MatrixXd y;  // A⁻¹Cᵀ, n x nc

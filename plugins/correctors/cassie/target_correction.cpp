@@ -2,12 +2,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "sketchlab/geometry/arclength.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 
 namespace sketchlab::cassie {
+
+namespace {
+
+// Parameter reached from t after a signed arclength s along the curve
+// (clamped at its ends): a walk along short chords, so the cost depends on
+// |s|, not on the curve's length.
+double parameter_at_offset(const Curve& c, double t, double s) {
+  constexpr double step = 1.0 / 64.0;
+  const double dir = s < 0 ? -1.0 : 1.0, goal = std::abs(s);
+  double u = t, walked = 0.0;
+  Vec3 prev = evaluate(c, t);
+  while (walked < goal) {
+    const double next = std::clamp(u + dir * step, 0.0, c.t_max());
+    if (next == u) break;
+    const Vec3 q = evaluate(c, next);
+    const double l = (q - prev).norm();
+    if (walked + l >= goal) return u + (next - u) * (l > 0 ? (goal - walked) / l : 1.0);
+    walked += l;
+    u = next;
+    prev = q;
+  }
+  return u;
+}
+
+}  // namespace
 
 void correct_targets(std::vector<Candidate>& cands, const Curve& fitted, const Network& net, double span,
                      int points) {
@@ -15,12 +40,11 @@ void correct_targets(std::vector<Candidate>& cands, const Curve& fitted, const N
   for (Candidate& c : cands) {
     if (c.kind != TargetKind::curve || c.at_curve_end) continue;
     const Curve& old = net.curves().at(c.curve).curve;
-    const double s0 = arclength(old, 0.0, c.t_curve);
-    const double total = arclength(old);
+    const double t0 = c.t_curve;
     double best = std::numeric_limits<double>::infinity();
     for (int i = 0; i < points; ++i) {
       const double u = points > 1 ? -1.0 + 2.0 * i / (points - 1) : 0.0;
-      const double t = parameter_at_arclength(old, std::clamp(s0 + u * span, 0.0, total));
+      const double t = parameter_at_offset(old, t0, u * span);
       const Vec3 q = evaluate(old, t);
       const double d = closest_point(fitted, q).distance;
       if (d < best) {

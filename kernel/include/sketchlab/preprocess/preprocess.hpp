@@ -49,6 +49,7 @@ struct PreprocessParams {
   // cassie_app rules only (the app's values); fit_error_factor,
   // max_g1_angle (corners), hook_max_length_factor, hook_max_fraction and
   // rdp_epsilon_factor above apply to both.
+  bool app_filter_input = true;              // item 1 (off: the samples are already the app's)
   double app_sample_step_factor = 0.1;       // ×δ: a sample when the hand moved more (item 1)
   double app_min_length_factor = 0.5;        // ×δ: shorter strokes are dropped (item 1)
   double app_min_duration = 0.2;             // s: briefer strokes with ends < 0.5δ apart are dropped
