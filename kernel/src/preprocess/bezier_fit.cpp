@@ -206,6 +206,10 @@ class Fitter {
 
   // Largest |Q(u_i) - p_i| (an upper bound of the distance of p_i to the
   // curve) and where it occurs, clamped strictly inside for splitting.
+  // Schneider measures the data points only; between two sparse samples (a
+  // tracking jump) the cubic could then bulge far from the stroke, so the
+  // curve at the middle of each interval is also measured against the chord
+  // it spans, and a bad interval splits at its inner end.
   double max_error(std::size_t lo, std::size_t hi, const Segment& bez,
                    const std::vector<double>& u, std::size_t& split) const {
     double worst = 0.0;
@@ -215,6 +219,18 @@ class Fitter {
       if (d > worst) {
         worst = d;
         split = i;
+      }
+    }
+    if (hi - lo < 2) return worst;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const Vec3 q = bezier_point(bez, 0.5 * (u[i - lo] + u[i + 1 - lo]));
+      const Vec3 ab = p_[i + 1] - p_[i];
+      const double len2 = ab.squaredNorm();
+      const double s = len2 > 0.0 ? std::clamp((q - p_[i]).dot(ab) / len2, 0.0, 1.0) : 0.0;
+      const double d = (p_[i] + s * ab - q).norm();
+      if (d > worst) {
+        worst = d;
+        split = i + 1 < hi ? i + 1 : i;
       }
     }
     return worst;

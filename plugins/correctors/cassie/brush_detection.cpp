@@ -159,7 +159,7 @@ std::vector<Candidate> detect_constraints(const Stroke& stroke, const Sketch& sk
       if (plane && lies_in(net.curves().at(h.curve).curve, *plane, th.on_plane)) planar_curve = true;
     }
     for (const CurveHit& h : hits) {
-      if (!inside.count(h.curve)) events.push_back({time, 0, curve_constraint(net, h, time, b, th.reuse)});
+      if (!inside.count(h.curve)) events.push_back({time, 0, curve_constraint(net, h, time, b, th.node_snap)});
     }
     inside = std::move(now);
     if (plane) {
@@ -188,7 +188,7 @@ std::vector<Candidate> detect_constraints(const Stroke& stroke, const Sketch& sk
       c.brush = smp.position;
       const std::vector<CurveHit> near = net.curves_near(g, th.grid);
       if (!near.empty()) {
-        c = curve_constraint(net, near.front(), smp.time, smp.position, th.reuse);
+        c = curve_constraint(net, near.front(), smp.time, smp.position, th.node_snap);
       } else if (plane && std::abs(plane->side(g)) <= th.grid) {
         c.kind = TargetKind::mirror;
         c.target = plane->project(g);

@@ -14,6 +14,7 @@ Thresholds thresholds(const CassieParams& p, double s) {
   t.merge = p.merge_factor * t.delta;
   t.plane_merge = p.plane_merge_factor * t.delta;
   t.reuse = p.reuse_factor * t.delta;
+  t.node_snap = p.node_snap_factor * t.delta;
   t.correction = p.correction_factor * t.delta;
   t.overlap = p.overlap_factor * t.delta;
   t.closure = p.closure_factor * t.delta;
@@ -54,7 +55,10 @@ std::vector<ParamSpec> param_specs() {
       real("plane_merge", d.plane_merge_factor, 0.0, 5.0, "δ",
            "two consecutive mirror-plane constraints this close are one (item 7: δ)"),
       real("reuse", d.reuse_factor, 0.0, 5.0, "δ",
-           "reuse an anchor, or snap to an end node of the crossed piece, within this (items 8, 12: δ)"),
+           "a constraint within this of an anchor of its Bézier reuses it, else splits (item 12: δ)"),
+      real("node_snap", d.node_snap_factor, 0.0, 5.0, "δ",
+           "a target snaps to an end node (two incidences or more) of the crossed piece within this "
+           "(item 8: δ)"),
       real("correction", d.correction_factor, 0.0, 5.0, "δ",
            "targets tried on the old curve around the detected one, ± this (item 8: δ/2)"),
       {"correction_points", ParamType::integer, std::int64_t{d.correction_points}, 0.0, 64.0, {}, "",
@@ -134,6 +138,7 @@ CassieParams params_from(const Params& p) {
   c.merge_factor = p.real("merge");
   c.plane_merge_factor = p.real("plane_merge");
   c.reuse_factor = p.real("reuse");
+  c.node_snap_factor = p.real("node_snap");
   c.correction_factor = p.real("correction");
   c.correction_points = static_cast<int>(p.integer("correction_points"));
   c.weight_grid = p.real("weight_grid");

@@ -38,7 +38,8 @@ struct CassieParams {
   double merge_factor = 0.5;             // ×δ, consecutive constraints this close are one (item 7)
   double plane_merge_factor = 1.0;       // ×δ, two plane constraints this close are one
   // Constraints (items 8, 11, 12).
-  double reuse_factor = 1.0;             // ×δ, reuse an anchor / snap to a node within δ
+  double reuse_factor = 1.0;             // ×δ, reuse an anchor within δ (item 12)
+  double node_snap_factor = 1.0;         // ×δ, snap to an end node of the crossed piece (item 8)
   double correction_factor = 0.5;        // ×δ, targets tried on the old curve: ±δ/2
   int correction_points = 6;             // ... this many
   double weight_grid = 1.0;              // grid point and mirror plane (CHI eq. 3: 1)
@@ -82,6 +83,7 @@ struct Thresholds {
   double merge = 0.01;
   double plane_merge = 0.02;
   double reuse = 0.02;
+  double node_snap = 0.02;
   double correction = 0.01;
   double overlap = 0.04;
   double closure = 0.04;
