@@ -5,19 +5,13 @@
 
 #include "anchor_binding.hpp"
 #include "subset_search.hpp"
+#include "synthetic.hpp"
 
 using namespace sketchlab;
 using namespace sketchlab::cassie;
+using sketchlab::test::straight;
 
 namespace {
-
-Curve straight(const Vec3& a, const Vec3& b, int k) {
-  Curve c;
-  c.kind = CurveKind::bezier;
-  for (int i = 0; i <= 3 * k; ++i) c.control_points.push_back(a + (b - a) * (i / (3.0 * k)));
-  c.sharp.assign(k + 1, false);
-  return c;
-}
 
 Candidate target(const Vec3& p, double w = 1.5) {
   Candidate c;

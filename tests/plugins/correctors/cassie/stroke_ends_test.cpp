@@ -15,17 +15,9 @@ using namespace sketchlab;
 using namespace sketchlab::cassie;
 using sketchlab::test::add_curve;
 using sketchlab::test::make_stroke;
+using sketchlab::test::straight;
 
 namespace {
-
-// A straight poly-Bézier of k segments from a to b.
-Curve straight(const Vec3& a, const Vec3& b, int k) {
-  Curve c;
-  c.kind = CurveKind::bezier;
-  for (int i = 0; i <= 3 * k; ++i) c.control_points.push_back(a + (b - a) * (i / (3.0 * k)));
-  c.sharp.assign(k + 1, false);
-  return c;
-}
 
 Candidate on(const Curve& stroke, double t, CurveId curve, double t_curve, const Vec3& target) {
   Candidate c;
