@@ -48,7 +48,9 @@ void add_convert_command(CLI::App& app, int& exit_code) {
       throw std::runtime_error(co->output + ": already exists; pass --overwrite to replace it");
     const std::filesystem::path history(co->history);
     const auto raw = co->raw.empty() ? raw_data_beside(history) : std::filesystem::path(co->raw);
-    const Recording rec = import_cassie(history, raw, history.stem().string());
+    std::vector<std::string> warnings;
+    const Recording rec = import_cassie(history, raw, history.stem().string(), &warnings);
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
     write_recording(co->output, rec, co->overwrite);
     std::size_t strokes = 0;
     for (const auto& e : rec.events) strokes += std::holds_alternative<StrokeEvent>(e.payload);

@@ -24,7 +24,6 @@ struct TeacherForcedCliOptions {
   double snap_tolerance = 1e-4;
 };
 
-// "k=v": true/false -> bool, integer -> int64, number -> double, else string.
 void print_distribution(const std::string& name, const Distribution& d, double unit, const char* u) {
   std::cout << name << "_median " << d.median * unit << " " << u << "\n"
             << name << "_p90 " << d.p90 * unit << " " << u << "\n"
@@ -65,10 +64,14 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
     print_distribution("mean_deviation", s.mean_deviation, 1000.0, "mm");
     print_distribution("max_deviation", s.max_deviation, 1000.0, "mm");
     std::cout << "snap_agreement " << 100.0 * s.snap_agreement() << " %\n"
+              << "snap_kind_agreement " << 100.0 * s.snap_kind_agreement() << " %\n"
               << "reference_snaps " << s.reference_snaps << " of " << s.endpoints << " endpoints\n"
               << "output_snaps " << s.output_snaps << "\nboth_snaps " << s.both_snaps << "\n"
-              << "kind_agreement " << (s.compared ? 100.0 * s.line_agreements / s.compared : 0.0) << " %\n";
+              << "snap_recall " << 100.0 * s.snap_recall() << " %\n"
+              << "snap_precision " << 100.0 * s.snap_precision() << " %\n"
+              << "kind_agreement " << 100.0 * s.line_agreement() << " %\n";
     print_distribution("latency", s.latency_ms, 1.0, "ms");
+    print_distribution("cpu", s.cpu_ms, 1.0, "ms");
     exit_code = 0;
   });
 }

@@ -12,6 +12,7 @@ void add_render_command(CLI::App& app, int& exit_code);  // built with the viewe
 void add_view_command(CLI::App& app, int& exit_code);    // built with viewers/desktop only
 void add_vr_command(CLI::App& app, int& exit_code);      // built with viewers/openxr only
 void add_teacher_forced_command(CLI::App& app, int& exit_code);
+void add_fidelity_command(CLI::App& app, int& exit_code);
 void add_record_command(CLI::App& app, int& exit_code);
 
 }  // namespace sketchlab::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   sketchlab::cli::add_vr_command(app, exit_code);
 #endif
   sketchlab::cli::add_teacher_forced_command(app, exit_code);
+  sketchlab::cli::add_fidelity_command(app, exit_code);
   sketchlab::cli::add_record_command(app, exit_code);
   try {
     app.parse(argc, argv);

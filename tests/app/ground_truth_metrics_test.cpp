@@ -24,7 +24,7 @@ nlohmann::json cube_metrics(const fs::path& dir, double noise) {
                   dir / (tag + "_synth.txt")) == 0);
   const fs::path exp = dir / (tag + ".yaml");
   std::ofstream(exp) << "experiment: " << tag << "\nrecordings: [" << rec.string() << "]\n"
-                     << "stacks: [{name: freehand, corrector: {plugin: freehand}}]\n"
+                     << "stacks: [{name: freehand, corrector: {plugin: freehand, params: {rules: sketchlab}}}]\n"
                      << "outputs: {dir: " << (dir / "runs").string()
                      << ", timestamp: false, report: true, ply: false, obj: false}\n";
   REQUIRE(run_cli("run " + exp.string(), dir / (tag + "_run.txt")) == 0);

@@ -131,10 +131,27 @@ ClosestPoint closest_point(const Curve& curve, const Vec3& p) {
   if (!p.allFinite()) throw std::invalid_argument("closest_point: query point is not finite");
   ClosestPoint best;
   double best_d2 = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < curve.segment_count(); ++k) {
+  int best_k = -1;
+  // A Bézier lies in the box of its control points, so the box's distance
+  // bounds the segment's from below: visit segments nearest box first and
+  // stop when no box can hold a closer point (same result as visiting all,
+  // the lowest segment winning ties; long curves cost a few segments).
+  const int k_count = curve.segment_count();
+  std::vector<std::pair<double, int>> order(static_cast<std::size_t>(k_count));
+  for (int k = 0; k < k_count; ++k) {
+    const auto seg = segment_points(curve, k);
+    Vec3 lo = seg[0], hi = seg[0];
+    for (const Vec3& q : seg) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    const Vec3 gap = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
+    order[static_cast<std::size_t>(k)] = {gap.squaredNorm(), k};
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& [box_d2, k] : order) {
+    if (box_d2 > best_d2) break;
     const SegmentHit h = closest_on_segment(segment_points(curve, k), p);
-    if (h.dist2 < best_d2) {
+    if (h.dist2 < best_d2 || (h.dist2 == best_d2 && k < best_k)) {
       best_d2 = h.dist2;
+      best_k = k;
       best.t = static_cast<double>(k) + h.u;
       best.point = h.point;
     }

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/geometry/polyline.hpp"
+#include "sketchlab/preprocess/turns.hpp"
 
 namespace sketchlab {
 namespace {
@@ -34,6 +36,11 @@ void check_params(const BezierFitParams& p) {
   }
   if (p.max_reparameterizations < 0 || p.max_reparameterizations > 1000) {
     throw std::invalid_argument("fit_poly_bezier: max_reparameterizations must be in [0, 1000]");
+  }
+  if (!(p.reparameterize_below >= 1.0) || !std::isfinite(p.reparameterize_below) ||
+      !(p.split_tolerance >= 0.0) || !std::isfinite(p.split_tolerance)) {
+    throw std::invalid_argument(
+        "fit_poly_bezier: reparameterize_below must be finite and >= 1, split_tolerance finite and >= 0");
   }
 }
 
@@ -94,25 +101,27 @@ class Fitter {
     struct Task {
       std::size_t lo, hi;
       Vec3 t1, t2;
+      double tolerance;
     };
+    const double piece_tolerance = prm_.split_tolerance > 0 ? prm_.split_tolerance : prm_.tolerance;
     // Explicit stack (right pushed before left) keeps the output in order
     // without recursion depth proportional to the number of points.
-    std::vector<Task> stack{{lo, hi, start_tangent(lo, hi), end_tangent(lo, hi)}};
+    std::vector<Task> stack{{lo, hi, start_tangent(lo, hi), end_tangent(lo, hi), prm_.tolerance}};
     while (!stack.empty()) {
       const Task t = stack.back();
       stack.pop_back();
       std::size_t split = 0;
-      if (fit_cubic(t.lo, t.hi, t.t1, t.t2, out, split)) continue;
+      if (fit_cubic(t.lo, t.hi, t.t1, t.t2, t.tolerance, out, split)) continue;
       const Vec3 c = center_tangent(t.lo, split, t.hi);
-      stack.push_back({split, t.hi, -c, t.t2});
-      stack.push_back({t.lo, split, t.t1, c});
+      stack.push_back({split, t.hi, -c, t.t2, piece_tolerance});
+      stack.push_back({t.lo, split, t.t1, c, piece_tolerance});
     }
   }
 
  private:
   // Schneider's FitCubic for one piece: true and appends on success, else
   // false with the split index (strictly inside).
-  bool fit_cubic(std::size_t lo, std::size_t hi, const Vec3& t1, const Vec3& t2,
+  bool fit_cubic(std::size_t lo, std::size_t hi, const Vec3& t1, const Vec3& t2, double tolerance,
                  std::vector<Segment>& out, std::size_t& split) const {
     const std::size_t n = hi - lo + 1;
     if (n == 2) {
@@ -125,17 +134,17 @@ class Fitter {
     std::vector<double> u = chord_length_parameters(lo, hi);
     Segment bez = generate(lo, hi, u, t1, t2);
     double err = max_error(lo, hi, bez, u, split);
-    if (err <= prm_.tolerance) {
+    if (err <= tolerance) {
       out.push_back(bez);
       return true;
     }
     // Close enough for reparameterisation to help (Schneider: 4 × error).
-    if (err <= 4.0 * prm_.tolerance) {
+    if (err <= prm_.reparameterize_below * tolerance) {
       for (int it = 0; it < prm_.max_reparameterizations; ++it) {
         reparameterize(lo, hi, bez, u);
         bez = generate(lo, hi, u, t1, t2);
         err = max_error(lo, hi, bez, u, split);
-        if (err <= prm_.tolerance) {
+        if (err <= tolerance) {
           out.push_back(bez);
           return true;
         }
@@ -182,7 +191,14 @@ class Fitter {
     }
     const double seg_len = (last - first).norm();
     const double eps = 1e-6 * seg_len;
-    if (!(al >= eps) || !(ar >= eps) || !std::isfinite(al) || !std::isfinite(ar)) {
+    // A handle longer than the polyline it fits throws the curve out of the
+    // stroke's neighbourhood between the data points (few points leave the
+    // least squares nearly free: a 3-sample stroke became a loop 0.78 m
+    // away): like a handle <= 0 it gets Wu–Barsky's third of the chord, and
+    // the error test then splits the piece if that does not fit.
+    double polyline = 0.0;
+    for (std::size_t i = lo; i < hi; ++i) polyline += (p_[i + 1] - p_[i]).norm();
+    if (!(al >= eps) || !(ar >= eps) || !(al <= polyline) || !(ar <= polyline)) {
       al = ar = seg_len / 3.0;
     }
     return {first, first + al * t1, last + ar * t2, last};
@@ -190,6 +206,10 @@ class Fitter {
 
   // Largest |Q(u_i) - p_i| (an upper bound of the distance of p_i to the
   // curve) and where it occurs, clamped strictly inside for splitting.
+  // Schneider measures the data points only; between two sparse samples (a
+  // tracking jump) the cubic could then bulge far from the stroke, so the
+  // curve at the middle of each interval is also measured against the chord
+  // it spans, and a bad interval splits at its inner end.
   double max_error(std::size_t lo, std::size_t hi, const Segment& bez,
                    const std::vector<double>& u, std::size_t& split) const {
     double worst = 0.0;
@@ -199,6 +219,18 @@ class Fitter {
       if (d > worst) {
         worst = d;
         split = i;
+      }
+    }
+    if (hi - lo < 2) return worst;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const Vec3 q = bezier_point(bez, 0.5 * (u[i - lo] + u[i + 1 - lo]));
+      const Vec3 ab = p_[i + 1] - p_[i];
+      const double len2 = ab.squaredNorm();
+      const double s = len2 > 0.0 ? std::clamp((q - p_[i]).dot(ab) / len2, 0.0, 1.0) : 0.0;
+      const double d = (p_[i] + s * ab - q).norm();
+      if (d > worst) {
+        worst = d;
+        split = i + 1 < hi ? i + 1 : i;
       }
     }
     return worst;
@@ -271,18 +303,12 @@ std::vector<std::size_t> find_corners(const std::vector<Vec3>& points,
   return corners;
 }
 
-Curve fit_poly_bezier(const std::vector<Vec3>& points, const BezierFitParams& params) {
-  check_params(params);
-  check_points(points, "fit_poly_bezier");
-  const std::vector<Vec3> p = dedupe(points);
-  if (p.size() < 2) {
-    throw std::invalid_argument("fit_poly_bezier: need at least 2 distinct points, got " +
-                                std::to_string(p.size()));
-  }
-  std::vector<std::size_t> cuts{0};
-  for (std::size_t c : find_corners(p, params)) cuts.push_back(c);
-  cuts.push_back(p.size() - 1);
+namespace {
 
+// Fits the sections [cuts[s], cuts[s+1]] of p (deduplicated) and joins them,
+// sharp between sections.
+Curve fit_cut_sections(const std::vector<Vec3>& p, const std::vector<std::size_t>& cuts,
+                       const BezierFitParams& params) {
   const Fitter fitter(p, params);
   std::vector<Segment> segments;
   Curve curve;
@@ -300,6 +326,72 @@ Curve fit_poly_bezier(const std::vector<Vec3>& points, const BezierFitParams& pa
     curve.control_points.insert(curve.control_points.end(), seg.begin() + 1, seg.end());
   }
   return curve;
+}
+
+}  // namespace
+
+std::vector<std::size_t> find_corners_by_turns(const std::vector<Vec3>& points, double angle,
+                                               std::size_t min_samples, double min_length) {
+  check_points(points, "find_corners_by_turns");
+  const std::size_t n = points.size();
+  const std::vector<double> turn = sample_turns(points);
+  const std::vector<double> cum = cumulative_length(points);
+  auto ok = [&](std::size_t a, std::size_t b) { return b - a + 1 >= min_samples && cum[b] - cum[a] > min_length; };
+  std::vector<std::size_t> corners;
+  std::size_t prev = 0;
+  for (std::size_t i = 1; i + 1 < n;) {
+    if (!(turn[i] > angle)) {
+      ++i;
+      continue;
+    }
+    std::size_t best = i;
+    std::size_t j = i;
+    for (; j + 1 < n && turn[j] > angle; ++j)
+      if (turn[j] > turn[best]) best = j;
+    if (ok(prev, best) && ok(best, n - 1)) {
+      corners.push_back(best);
+      prev = best;
+    }
+    i = j;
+  }
+  return corners;
+}
+
+Curve fit_poly_bezier_sections(const std::vector<std::vector<Vec3>>& sections,
+                               const BezierFitParams& params) {
+  check_params(params);
+  if (sections.empty()) throw std::invalid_argument("fit_poly_bezier_sections: no sections");
+  std::vector<Vec3> all;
+  std::vector<std::size_t> cuts{0};
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    check_points(sections[s], "fit_poly_bezier_sections");
+    const std::vector<Vec3> p = dedupe(sections[s]);
+    if (p.size() < 2) {
+      throw std::invalid_argument("fit_poly_bezier_sections: section " + std::to_string(s) +
+                                  " has fewer than 2 distinct points");
+    }
+    if (s > 0 && (p.front() - all.back()).norm() > 0.0) {
+      throw std::invalid_argument("fit_poly_bezier_sections: section " + std::to_string(s) +
+                                  " does not start where the previous one ends");
+    }
+    all.insert(all.end(), p.begin() + (s > 0 ? 1 : 0), p.end());
+    cuts.push_back(all.size() - 1);
+  }
+  return fit_cut_sections(all, cuts, params);
+}
+
+Curve fit_poly_bezier(const std::vector<Vec3>& points, const BezierFitParams& params) {
+  check_params(params);
+  check_points(points, "fit_poly_bezier");
+  const std::vector<Vec3> p = dedupe(points);
+  if (p.size() < 2) {
+    throw std::invalid_argument("fit_poly_bezier: need at least 2 distinct points, got " +
+                                std::to_string(p.size()));
+  }
+  std::vector<std::size_t> cuts{0};
+  for (std::size_t c : find_corners(p, params)) cuts.push_back(c);
+  cuts.push_back(p.size() - 1);
+  return fit_cut_sections(p, cuts, params);
 }
 
 }  // namespace sketchlab

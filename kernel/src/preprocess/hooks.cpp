@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sketchlab/geometry/polyline.hpp"
+#include "sketchlab/preprocess/turns.hpp"
 
 namespace sketchlab {
 namespace {
@@ -103,6 +104,47 @@ IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams
   r.first = start_hook(points, params);
   std::vector<Vec3> rest(points.rbegin(), points.rend() - static_cast<std::ptrdiff_t>(r.first));
   if (rest.size() >= 2) r.last = n - 1 - start_hook(rest, params);
+  return r;
+}
+
+IndexRange find_hookless_range_by_turns(const std::vector<Vec3>& points, const TurnHookParams& params) {
+  const std::size_t n = points.size();
+  if (n < 2) {
+    throw std::invalid_argument("find_hookless_range_by_turns: need at least 2 points, got " +
+                                std::to_string(n));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!points[i].allFinite()) {
+      throw std::invalid_argument("find_hookless_range_by_turns: point " + std::to_string(i) +
+                                  " is not finite");
+    }
+  }
+  if (!(params.max_length > 0.0) || !std::isfinite(params.max_length) ||
+      !(params.max_fraction >= 0.0 && params.max_fraction < 0.5) ||
+      !(params.min_angle > 0.0 && params.min_angle < std::numbers::pi)) {
+    throw std::invalid_argument(
+        "find_hookless_range_by_turns: need max_length > 0 (finite), max_fraction in [0, 0.5), "
+        "min_angle in (0, π)");
+  }
+  const std::vector<double> turn = sample_turns(points);
+  const double limit = std::min(params.max_length, params.max_fraction * polyline_length(points));
+  IndexRange r{0, n - 1};
+  double scanned = 0.0;
+  std::size_t cut = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    scanned += (points[i] - points[i - 1]).norm();
+    if (scanned >= limit) break;
+    if (turn[i] > params.min_angle) cut = i;
+  }
+  if (cut > 0 && n - cut >= params.min_remaining) r.first = cut;
+  scanned = 0.0;
+  cut = 0;
+  for (std::size_t j = n - 1; j-- > r.first + 1;) {
+    scanned += (points[j + 1] - points[j]).norm();
+    if (scanned >= limit) break;
+    if (turn[j] > params.min_angle) cut = j;
+  }
+  if (cut > 0 && cut - r.first + 1 >= params.min_remaining) r.last = cut;
   return r;
 }
 

@@ -25,6 +25,27 @@ void check_points(const std::vector<Vec3>& points, const char* where) {
   }
 }
 
+void check_times(const std::vector<Vec3>& points, const std::vector<double>& times, const char* where) {
+  if (!times.empty() && times.size() != points.size()) {
+    throw std::invalid_argument(std::string(where) + ": " + std::to_string(times.size()) +
+                                " times for " + std::to_string(points.size()) + " points");
+  }
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (!std::isfinite(times[i])) {
+      throw std::invalid_argument(std::string(where) + ": time " + std::to_string(i) + " is not finite");
+    }
+    if (i > 0 && times[i] < times[i - 1]) {
+      throw std::invalid_argument(std::string(where) + ": time " + std::to_string(i) +
+                                  " is earlier than the previous sample");
+    }
+  }
+}
+
+double mean_speed(double length, const std::vector<double>& times) {
+  const double duration = times.empty() ? 0.0 : times.back() - times.front();
+  return duration > 0.0 ? length / duration : std::numeric_limits<double>::infinity();
+}
+
 // Polyline through the stroke ends and the centroids of consecutive pieces
 // of about `spacing` arclength. Centroids average the sampling jitter that
 // would otherwise inflate the length of even a perfectly straight stroke.
@@ -61,28 +82,36 @@ LineDetection detect_line(const std::vector<Vec3>& points, const std::vector<dou
         "detect_line: need min_length_ratio in (0, 1], finite min_speed >= 0, "
         "finite resample_spacing > 0");
   }
-  if (!times.empty() && times.size() != points.size()) {
-    throw std::invalid_argument("detect_line: " + std::to_string(times.size()) + " times for " +
-                                std::to_string(points.size()) + " points");
-  }
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    if (!std::isfinite(times[i])) {
-      throw std::invalid_argument("detect_line: time " + std::to_string(i) + " is not finite");
-    }
-    if (i > 0 && times[i] < times[i - 1]) {
-      throw std::invalid_argument("detect_line: time " + std::to_string(i) +
-                                  " is earlier than the previous sample");
-    }
-  }
+  check_times(points, times, "detect_line");
   LineDetection r;
   const std::vector<Vec3> coarse = coarse_polyline(points, params.resample_spacing);
   r.length = polyline_length(coarse);
   if (!(r.length > 0.0)) throw std::invalid_argument("detect_line: stroke has zero length");
   const double chord = (points.back() - points.front()).norm();
   r.length_ratio = std::min(1.0, chord / r.length);
-  const double duration = times.empty() ? 0.0 : times.back() - times.front();
-  r.mean_speed = duration > 0.0 ? r.length / duration : std::numeric_limits<double>::infinity();
+  r.mean_speed = mean_speed(r.length, times);
   r.is_line = r.length_ratio >= params.min_length_ratio && r.mean_speed >= params.min_speed;
+  return r;
+}
+
+LineDetection detect_line_by_excess(const std::vector<Vec3>& points,
+                                    const std::vector<double>& times, double max_excess,
+                                    double min_speed, double min_length) {
+  check_points(points, "detect_line_by_excess");
+  check_times(points, times, "detect_line_by_excess");
+  if (!(max_excess >= 0.0) || !(min_speed >= 0.0) || !(min_length >= 0.0) || !std::isfinite(max_excess) ||
+      !std::isfinite(min_speed) || !std::isfinite(min_length)) {
+    throw std::invalid_argument(
+        "detect_line_by_excess: max_excess, min_speed and min_length must be finite and >= 0");
+  }
+  LineDetection r;
+  r.length = polyline_length(points);
+  if (!(r.length > 0.0)) throw std::invalid_argument("detect_line_by_excess: stroke has zero length");
+  const double chord = (points.back() - points.front()).norm();
+  r.length_ratio = std::min(1.0, chord / r.length);
+  r.mean_speed = mean_speed(r.length, times);
+  r.is_line = r.length < min_length ||
+              (chord > 0.0 && (r.length - chord) / chord < max_excess && r.mean_speed > min_speed);
   return r;
 }
 

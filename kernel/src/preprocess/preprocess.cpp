@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sketchlab/preprocess/bezier_fit.hpp"
+#include "sketchlab/preprocess/input_filter.hpp"
 #include "sketchlab/preprocess/line_detection.hpp"
 #include "sketchlab/preprocess/rdp.hpp"
 
@@ -16,6 +17,71 @@ std::string range_error(const char* name, double value, const char* allowed) {
   std::ostringstream s;
   s << name << " = " << value << ": allowed " << allowed;
   return s.str();
+}
+
+// The CASSIE app's pipeline (reference items 1–4); d = δ/s.
+Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<double>& times,
+                            const PreprocessParams& params, double d) {
+  InputFilterParams ip;
+  ip.min_step = params.app_sample_step_factor * d;
+  ip.min_length = params.app_min_length_factor * d;
+  ip.min_duration = params.app_min_duration;
+  ip.end_trim = params.app_end_trim;
+  if (!params.app_filter_input) ip = {0.0, 0.0, 0.0, 0.0};
+  const FilteredInput in = filter_input(points, times, ip);
+  if (in.dropped) {
+    throw std::invalid_argument("preprocess_stroke: dropped as the CASSIE app does: " + in.reason);
+  }
+  std::vector<Vec3> pts;
+  std::vector<double> ts;
+  for (std::size_t i : in.indices) {
+    pts.push_back(points[i]);
+    if (!times.empty()) ts.push_back(times[i]);
+  }
+  Preprocessed out;
+  out.kept = {in.indices.front(), in.indices.back()};
+  // Item 2: the line test comes first, on the filtered samples, hooks
+  // included; the app compares the excess ratio with δ(s) itself.
+  if (params.detect_lines && detect_line_by_excess(pts, ts, d, d / params.app_line_time, d).is_line) {
+    out.is_line = true;
+    out.points = pts;
+    out.curve = make_line(pts.front(), pts.back());
+    return out;
+  }
+  IndexRange r{0, pts.size() - 1};
+  if (params.remove_hooks) {
+    TurnHookParams hp;
+    hp.max_length = params.hook_max_length_factor * d;
+    hp.max_fraction = params.hook_max_fraction;
+    hp.min_angle = params.app_hook_angle;
+    r = find_hookless_range_by_turns(pts, hp);
+  }
+  out.kept = {in.indices[r.first], in.indices[r.last]};
+  out.points.assign(pts.begin() + static_cast<std::ptrdiff_t>(r.first),
+                    pts.begin() + static_cast<std::ptrdiff_t>(r.last) + 1);
+  // Item 4: corners on the raw samples, then RDP and Schneider per section.
+  std::vector<std::size_t> cuts{0};
+  for (std::size_t c : find_corners_by_turns(out.points, params.max_g1_angle,
+                                             static_cast<std::size_t>(params.app_corner_min_samples),
+                                             params.app_corner_min_length_factor * d))
+    cuts.push_back(c);
+  cuts.push_back(out.points.size() - 1);
+  std::vector<std::vector<Vec3>> sections;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const std::vector<Vec3> piece(out.points.begin() + static_cast<std::ptrdiff_t>(cuts[k]),
+                                  out.points.begin() + static_cast<std::ptrdiff_t>(cuts[k + 1]) + 1);
+    sections.push_back(rdp_simplify(piece, params.rdp_epsilon_factor * d));
+  }
+  BezierFitParams fp;
+  fp.tolerance = params.fit_error_factor * d;
+  fp.max_g1_angle = params.max_g1_angle;
+  fp.corner_window = d;
+  fp.tangent_window = 1e-9 * d;  // Schneider's tangents: the first (last) two points
+  fp.max_reparameterizations = params.app_reparameterizations;
+  fp.reparameterize_below = params.app_reparameterize_below;
+  fp.split_tolerance = params.app_split_tolerance;
+  out.curve = fit_poly_bezier_sections(sections, fp);
+  return out;
 }
 
 }  // namespace
@@ -55,7 +121,33 @@ std::string validate(const PreprocessParams& p) {
   if (!finite_pos(p.tangent_window_factor)) {
     return range_error("tangent_window_factor", p.tangent_window_factor, "> 0 (×δ)");
   }
+  auto finite_nonneg = [](double x) { return std::isfinite(x) && x >= 0.0; };
+  if (!finite_nonneg(p.app_sample_step_factor)) return range_error("app_sample_step_factor", p.app_sample_step_factor, ">= 0 (×δ)");
+  if (!finite_nonneg(p.app_min_length_factor)) return range_error("app_min_length_factor", p.app_min_length_factor, ">= 0 (×δ)");
+  if (!finite_nonneg(p.app_min_duration)) return range_error("app_min_duration", p.app_min_duration, ">= 0 s");
+  if (!finite_nonneg(p.app_end_trim)) return range_error("app_end_trim", p.app_end_trim, ">= 0 s");
+  if (!finite_pos(p.app_line_time)) return range_error("app_line_time", p.app_line_time, "> 0 s");
+  if (!(p.app_hook_angle > 0.0 && p.app_hook_angle < std::numbers::pi)) {
+    return range_error("app_hook_angle", p.app_hook_angle, "(0, π) rad");
+  }
+  if (p.app_corner_min_samples < 2) return range_error("app_corner_min_samples", p.app_corner_min_samples, ">= 2");
+  if (!finite_nonneg(p.app_corner_min_length_factor)) {
+    return range_error("app_corner_min_length_factor", p.app_corner_min_length_factor, ">= 0 (×δ)");
+  }
+  if (p.app_reparameterizations < 0 || p.app_reparameterizations > 1000) {
+    return range_error("app_reparameterizations", p.app_reparameterizations, "[0, 1000]");
+  }
+  if (!(p.app_reparameterize_below >= 1.0) || !std::isfinite(p.app_reparameterize_below)) {
+    return range_error("app_reparameterize_below", p.app_reparameterize_below, ">= 1");
+  }
+  if (!finite_nonneg(p.app_split_tolerance)) return range_error("app_split_tolerance", p.app_split_tolerance, ">= 0 m");
   return {};
+}
+
+PreprocessParams cassie_app_preprocess() {
+  PreprocessParams p;
+  p.rules = PreprocessRules::cassie_app;
+  return p;
 }
 
 Preprocessed preprocess_stroke(const std::vector<Vec3>& points, const std::vector<double>& times,
@@ -97,6 +189,7 @@ Preprocessed preprocess_stroke(const std::vector<Vec3>& points, const std::vecto
 
   // δ(s) = δ/s: thresholds are physical sizes at the user's hand.
   const double d = params.delta / workspace_scale;
+  if (params.rules == PreprocessRules::cassie_app) return preprocess_app(points, times, params, d);
   Preprocessed out;
   out.kept = {0, points.size() - 1};
   if (params.remove_hooks) {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "json_codec.hpp"
 #include "sketchlab/curve.hpp"
 #include "sketchlab/event.hpp"
 #include "sketchlab/stroke.hpp"
@@ -21,6 +22,11 @@ using json = nlohmann::json;
 
 // Shortest round-trip text of a double, as in recordings.
 std::string num_text(double v) { return json(v).dump(); }
+
+// The limits of the recording format (event_json.hpp), as messages say them.
+static_assert(json_codec::max_time == 1e9 && json_codec::max_coordinate == 1e6);
+constexpr const char* time_range = "[0, 1e9] s";
+constexpr const char* coordinate_range = "±1e6 m";
 
 struct Source {
   std::string file;
@@ -40,6 +46,15 @@ struct Source {
     if (!std::isfinite(x)) fail(where, "field '" + name + "' is not finite");
     return x;
   }
+  // A time the recording format can hold: [0, 1e9] s (event_json.hpp).
+  double time(const json& v, const std::string& where, const std::string& name) const {
+    const double x = number(v, where, name);
+    if (x < 0.0 || x > json_codec::max_time) {
+      fail(where, "field '" + name + "' = " + num_text(x) + " s is outside " + time_range +
+                      " (seconds since the session started)");
+    }
+    return x;
+  }
   const json& array(const json& v, const std::string& where, const std::string& name) const {
     if (!v.is_array()) fail(where, "field '" + name + "' must be an array, got " + v.type_name());
     return v;
@@ -49,6 +64,16 @@ struct Source {
     if (v.size() != 3) fail(where, "field '" + name + "' must have 3 numbers, got " + std::to_string(v.size()));
     return {number(v[0], where, name + "[0]"), number(v[1], where, name + "[1]"),
             number(v[2], where, name + "[2]")};
+  }
+  // Coordinates the recording format can hold (|x| <= 1e6 m, event_json.hpp).
+  static bool in_range(const Vec3& p) { return p.cwiseAbs().maxCoeff() <= json_codec::max_coordinate; }
+  Vec3 coordinate(const json& v, const std::string& where, const std::string& name) const {
+    const Vec3 p = xyz_array(v, where, name);
+    if (!in_range(p)) {
+      fail(where, "field '" + name + "' = (" + num_text(p.x()) + ", " + num_text(p.y()) + ", " +
+                      num_text(p.z()) + ") is absurd: coordinates must be within " + coordinate_range);
+    }
+    return p;
   }
 };
 
@@ -75,9 +100,12 @@ struct SystemState {
   double time = 0.0;
   bool mirroring = false;
   double scale = 1.0;
+  int interaction = 0;     // interactionType (2 = delete stroke)
+  std::int64_t element = -1;  // elementID
 };
 
-std::vector<CassieStroke> parse_history(const json& doc, const Source& src) {
+std::vector<CassieStroke> parse_history(const json& doc, const Source& src,
+                                        std::vector<std::string>& warnings) {
   if (!doc.is_array()) src.fail("top level", std::string("expected an array of strokes, got ") + doc.type_name());
   std::vector<CassieStroke> out;
   for (std::size_t i = 0; i < doc.size(); ++i) {
@@ -90,7 +118,17 @@ std::vector<CassieStroke> parse_history(const json& doc, const Source& src) {
     where += " (id " + std::to_string(s.id) + ")";
     const json& samples = src.array(src.need(e, "input_samples", where), where, "input_samples");
     for (std::size_t k = 0; k < samples.size(); ++k) {
-      s.samples.push_back(src.xyz_array(samples[k], where, "input_samples[" + std::to_string(k) + "]"));
+      const std::string name = "input_samples[" + std::to_string(k) + "]";
+      const Vec3 p = src.xyz_array(samples[k], where, name);
+      // A tracking glitch: drop the sample, keep the stroke (its neatened
+      // curve is still CASSIE's answer).
+      if (!Source::in_range(p)) {
+        warnings.push_back(src.file + ": " + where + ": " + name + " = (" + num_text(p.x()) + ", " +
+                           num_text(p.y()) + ", " + num_text(p.z()) +
+                           ") is absurd (a coordinate beyond " + coordinate_range + "); sample dropped");
+        continue;
+      }
+      s.samples.push_back(p);
     }
     const json& type = src.need(e, "curve_type", where);
     if (!type.is_string() || (type != "line" && type != "polybezier")) {
@@ -109,22 +147,47 @@ std::vector<CassieStroke> parse_history(const json& doc, const Source& src) {
       }
       std::vector<Vec3> seg;
       for (std::size_t m = 0; m < per_segment; ++m) {
-        seg.push_back(src.xyz_array(ctrl[k][m], where, name + "[" + std::to_string(m) + "]"));
+        seg.push_back(src.coordinate(ctrl[k][m], where, name + "[" + std::to_string(m) + "]"));
       }
       s.segments.push_back(std::move(seg));
     }
-    s.creation = src.number(src.need(e, "creation_time", where), where, "creation_time");
+    s.creation = src.time(src.need(e, "creation_time", where), where, "creation_time");
     const json& del = src.need(e, "deletion_time", where);
-    if (!del.is_null()) {
-      s.deletion = src.number(del, where, "deletion_time");
-      if (*s.deletion < s.creation) {
-        src.fail(where, "deletion_time " + num_text(*s.deletion) + " is before creation_time " +
-                            num_text(s.creation));
-      }
-    }
+    if (!del.is_null()) s.deletion = src.time(del, where, "deletion_time");
     out.push_back(std::move(s));
   }
   return out;
+}
+
+// A stroke "deleted before it was created" (a real quirk of `flower`): the
+// history's deletion_time is not usable. The delete-stroke action the app
+// logged for it (or for its mirrored twin: same creation time) after its
+// creation is used instead; without one the stroke stays alive. Warns either
+// way, naming the stroke.
+void repair_deletions(std::vector<CassieStroke>& strokes, const std::vector<SystemState>& states,
+                      const Source& src, std::vector<std::string>& warnings) {
+  for (CassieStroke& s : strokes) {
+    if (!s.deletion || *s.deletion >= s.creation) continue;
+    std::vector<std::int64_t> ids{static_cast<std::int64_t>(s.id)};
+    for (const CassieStroke& t : strokes)
+      if (t.id != s.id && t.creation == s.creation) ids.push_back(static_cast<std::int64_t>(t.id));
+    std::optional<double> logged;
+    for (const SystemState& st : states) {
+      if (st.interaction != 2 || st.time < s.creation) continue;
+      if (std::find(ids.begin(), ids.end(), st.element) == ids.end()) continue;
+      logged = st.time;
+      break;
+    }
+    std::string msg = src.file + ": stroke id " + std::to_string(s.id) + ": deletion_time " +
+                      num_text(*s.deletion) + " is before creation_time " + num_text(s.creation) + "; ";
+    if (logged) {
+      msg += "deleted at " + num_text(*logged) + " instead (the delete action raw_data logs for it)";
+    } else {
+      msg += "kept alive (raw_data logs no later delete action for it)";
+    }
+    warnings.push_back(msg);
+    s.deletion = logged;
+  }
 }
 
 // The neatened curve as a kernel Curve.
@@ -287,10 +350,12 @@ MirrorInference infer_mirror_plane(
 }
 
 Recording import_cassie(const std::filesystem::path& sketch_history_json,
-                        const std::filesystem::path& raw_data_json, const std::string& session) {
+                        const std::filesystem::path& raw_data_json, const std::string& session,
+                        std::vector<std::string>* warnings_out) {
   const Source hsrc{sketch_history_json.string()};
   const Source rsrc{raw_data_json.string()};
-  const std::vector<CassieStroke> strokes = parse_history(load_json(sketch_history_json), hsrc);
+  std::vector<std::string> warnings;
+  std::vector<CassieStroke> strokes = parse_history(load_json(sketch_history_json), hsrc, warnings);
 
   const json raw = load_json(raw_data_json);
   std::vector<SystemState> states;
@@ -298,16 +363,20 @@ Recording import_cassie(const std::filesystem::path& sketch_history_json,
   for (std::size_t i = 0; i < jstates.size(); ++i) {
     const std::string where = "systemStates[" + std::to_string(i) + "]";
     SystemState st;
-    st.time = rsrc.number(rsrc.need(jstates[i], "time", where), where, "time");
+    st.time = rsrc.time(rsrc.need(jstates[i], "time", where), where, "time");
     const json& m = rsrc.need(jstates[i], "mirroring", where);
     if (!m.is_boolean()) rsrc.fail(where, "field 'mirroring' must be true or false");
     st.mirroring = m.get<bool>();
     st.scale = rsrc.number(rsrc.need(jstates[i], "canvasScale", where), where, "canvasScale");
-    if (!(st.scale > 0.0)) rsrc.fail(where, "field 'canvasScale' must be > 0");
+    if (!(st.scale > 0.0) || st.scale > 1e6) rsrc.fail(where, "field 'canvasScale' must be in (0, 1e6]");
+    // Optional (older exports): which action, on which element.
+    if (const json a = jstates[i].value("interactionType", json()); a.is_number_integer()) st.interaction = a.get<int>();
+    if (const json a = jstates[i].value("elementID", json()); a.is_number_integer()) st.element = a.get<std::int64_t>();
     states.push_back(st);
   }
   std::stable_sort(states.begin(), states.end(),
                    [](const SystemState& a, const SystemState& b) { return a.time < b.time; });
+  repair_deletions(strokes, states, hsrc, warnings);
 
   // Workspace: Unity is y-up; grid and mirror plane inferred from the data.
   std::vector<Vec3> endpoints;
@@ -353,6 +422,11 @@ Recording import_cassie(const std::filesystem::path& sketch_history_json,
       {"sample_times", "not recorded by CASSIE: spread by arclength from the last logged system "
                        "state before creation (else 1 s before) to creation_time"},
   };
+  if (!warnings.empty()) {
+    std::string all;
+    for (const std::string& w : warnings) all += (all.empty() ? "" : "; ") + w;
+    h.source["import_warnings"] = all;
+  }
 
   std::vector<Event> events;
   for (std::size_t i = 1; i < states.size(); ++i) {
@@ -397,12 +471,14 @@ Recording import_cassie(const std::filesystem::path& sketch_history_json,
   std::stable_sort(events.begin(), events.end(),
                    [](const Event& a, const Event& b) { return a.time < b.time; });
   rec.events = std::move(events);
+  if (warnings_out) *warnings_out = std::move(warnings);
   return rec;
 }
 
-Recording import_cassie_session(const std::filesystem::path& dataset_dir, const std::string& session) {
+Recording import_cassie_session(const std::filesystem::path& dataset_dir, const std::string& session,
+                                std::vector<std::string>* warnings) {
   return import_cassie(dataset_dir / "sketch_history" / (session + ".json"),
-                       dataset_dir / "raw_data" / (session + ".json"), session);
+                       dataset_dir / "raw_data" / (session + ".json"), session, warnings);
 }
 
 }  // namespace sketchlab

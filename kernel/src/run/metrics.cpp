@@ -10,6 +10,7 @@
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/bounding_box.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/geometry/hausdorff.hpp"
 #include "sketchlab/run/distribution.hpp"
 
 namespace sketchlab {
@@ -175,6 +176,29 @@ void input_deviation(const Sketch& sketch, CaseMetrics& m) {
   if (!count) return;
   m.values["input_deviation_mean_m"] = sum / double(count);
   m.values["input_deviation_max_m"] = max;
+}
+
+// Two-sided distance of each live 3D stroke to its curve: the curve it made
+// (the closest of its curves; a mirrored copy is farther), both ways.
+void input_hausdorff(const Sketch& sketch, CaseMetrics& m) {
+  double sum = 0, max = 0;
+  std::size_t count = 0;
+  for (StrokeId s : strokes_with_curves(sketch)) {
+    const Stroke& stroke = sketch.strokes.at(s);
+    if (stroke.samples_are_pixels || stroke.samples.empty()) continue;
+    std::vector<Vec3> polyline;
+    for (const auto& sample : stroke.samples) polyline.push_back(sample.position);
+    double d = std::numeric_limits<double>::infinity();
+    for (CurveId id : curves_of_stroke(sketch, s))
+      d = std::min(d, hausdorff_distance(sketch.network.find_curve(id)->curve, polyline).max());
+    if (!std::isfinite(d)) continue;
+    sum += d;
+    max = std::max(max, d);
+    ++count;
+  }
+  if (!count) return;
+  m.values["input_hausdorff_mean_m"] = sum / double(count);
+  m.values["input_hausdorff_max_m"] = max;
 }
 
 void enforced_residuals(const ReplayResult& r, CaseMetrics& m) {
@@ -349,6 +373,7 @@ CaseMetrics compute_metrics(const ReplayResult& result, const MetricsOptions& op
   latency_metrics(result, m);
   network_metrics(sketch, m);
   input_deviation(sketch, m);
+  input_hausdorff(sketch, m);
   enforced_residuals(result, m);
   reference_metrics(result, options, m);
   ground_truth_metrics(result, options, m);

@@ -1,11 +1,13 @@
 #include "sketchlab/run/teacher_forced.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <time.h>
 
 #include "sketchlab/geometry/arclength.hpp"
 
@@ -14,9 +16,9 @@ namespace {
 
 struct Pending {
   StrokeId stroke = 0;
+  Layer layer = Layer::automatic;
   double time = 0.0;
   Curve curve;
-  Layer layer = Layer::free;  // the stroke's own layer, as a layer-aware corrector expects
 };
 
 // Adds a reference curve to the sketch with nodes where its joints lie on
@@ -91,6 +93,12 @@ void compare(const Curve& ref, const Curve& out, int n, TeacherForcedStroke& r) 
 
 }  // namespace
 
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector& corrector,
                                                 const TeacherForcedOptions& opt) {
   if (opt.resample < 2) throw std::invalid_argument("teacher_forced: resample must be >= 2");
@@ -136,7 +144,10 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
       } else {
         sketch.workspace.scale = stroke.workspace_scale;
         const auto start = std::chrono::steady_clock::now();
+        const double cpu_start = thread_cpu_ms();
         const Correction c = corrector.correct(stroke, sketch);
+        r.cpu_ms = thread_cpu_ms() - cpu_start;
+        r.corrected = true;
         r.latency_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         r.stats = c.stats;
@@ -170,7 +181,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
         }
       }
       out.push_back(r);
-      if (ref != reference.end()) pending.push_back({stroke.id, e.time, ref->second, stroke.layer});
+      if (ref != reference.end()) pending.push_back({stroke.id, stroke.layer, e.time, ref->second});
     }
   }
   return out;
@@ -179,20 +190,24 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
 TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes) {
   TeacherForcedSummary s;
   s.strokes = strokes.size();
-  std::vector<double> ep, mean, mx, lat;
+  std::vector<double> ep, mean, mx, lat, cpu;
   for (const auto& r : strokes) {
     if (!r.error.empty()) ++s.errors;
+    if (r.corrected) {
+      lat.push_back(r.latency_ms);
+      cpu.push_back(r.cpu_ms);
+    }
     if (!r.compared) continue;
     ++s.compared;
     ep.push_back(r.endpoint_distance);
     mean.push_back(r.mean_deviation);
     mx.push_back(r.max_deviation);
-    lat.push_back(r.latency_ms);
     s.line_agreements += r.reference_line == r.output_line;
     for (int k = 0; k < 2; ++k) {
       const bool a = !r.reference_snap[k].empty(), b = !r.output_snap[k].empty();
       ++s.endpoints;
       s.snap_agreements += a == b;
+      s.snap_kind_agreements += r.reference_snap[k] == r.output_snap[k];
       s.reference_snaps += a;
       s.output_snaps += b;
       s.both_snaps += a && b;
@@ -202,7 +217,20 @@ TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes) 
   s.mean_deviation = distribution(mean);
   s.max_deviation = distribution(mx);
   s.latency_ms = distribution(lat);
+  s.cpu_ms = distribution(cpu);
   return s;
+}
+
+std::string fidelity_group(const RecordingHeader& header) {
+  const auto field = [&](const char* k) {
+    const auto it = header.source.find(k);
+    return it == header.source.end() ? std::string() : it->second;
+  };
+  if (field("interaction_mode") == "free creation") return "showcase";
+  std::string system = field("system");
+  if (system.empty()) return "other";
+  system[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(system[0])));
+  return system;
 }
 
 std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) {
@@ -210,7 +238,7 @@ std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) 
   o.precision(9);
   o << "stroke,time,compared,reference_kind,output_kind,endpoint_distance,mean_deviation,"
        "max_deviation,reference_snap0,reference_snap1,output_snap0,output_snap1,"
-       "constraints_considered,constraints_enforced,subsets_tried,latency_ms,error\n";
+       "constraints_considered,constraints_enforced,subsets_tried,latency_ms,cpu_ms,error\n";
   for (const auto& r : strokes) {
     std::string err = r.error;
     std::replace(err.begin(), err.end(), ',', ';');
@@ -220,7 +248,7 @@ std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) 
       << r.mean_deviation << ',' << r.max_deviation << ',' << r.reference_snap[0] << ','
       << r.reference_snap[1] << ',' << r.output_snap[0] << ',' << r.output_snap[1] << ','
       << r.constraints_considered << ',' << r.constraints_enforced << ',' << r.stats.subsets_tried
-      << ',' << r.latency_ms << ',' << err << '\n';
+      << ',' << r.latency_ms << ',' << r.cpu_ms << ',' << err << '\n';
   }
   return o.str();
 }

@@ -4,280 +4,244 @@
 #include <chrono>
 #include <cmath>
 
-#include "candidates.hpp"
+#include "anchor_binding.hpp"
+#include "brush_detection.hpp"
+#include "cassie_edit.hpp"
 #include "line_beautify.hpp"
+#include "mirror_plane.hpp"
 #include "on_surface.hpp"
+#include "plane_fit.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "stroke_ends.hpp"
 #include "subset_search.hpp"
+#include "target_correction.hpp"
 
 namespace sketchlab::cassie {
 namespace {
-
-ConstraintKind kind_of(TargetKind k) {
-  switch (k) {
-    case TargetKind::curve: return ConstraintKind::intersection;
-    case TargetKind::node: return ConstraintKind::intersection;
-    case TargetKind::grid: return ConstraintKind::grid_point;
-    case TargetKind::mirror: return ConstraintKind::mirror_plane;
-    case TargetKind::closure: return ConstraintKind::closure;
-  }
-  return ConstraintKind::intersection;
-}
 
 double line_angle(const Vec3& a, const Vec3& b) {
   const double c = std::clamp(std::abs(a.normalized().dot(b.normalized())), 0.0, 1.0);
   return std::acos(c);
 }
 
-// Where an enforced candidate sits on the new curve.
-struct Placed {
-  int candidate = 0;
-  double t = 0.0;  // parameter on the new curve
+// Everything one stage hands to the next.
+struct Context {
+  const Stroke& stroke;
+  const Sketch& sketch;
+  const CassieParams& params;
+  Thresholds th;
+  bool use_mirror = false;
+  ConstraintRef stroke_ref;
+  CorrectionStats stats;
 };
+
+std::vector<Candidate> detect(Context& cx) {
+  DetectionStats ds;
+  auto cands = detect_constraints(cx.stroke, cx.sketch, cx.th, cx.params.brush_step, cx.use_mirror, ds);
+  cx.stats.extra["brush_queries"] = ds.brush_queries;
+  cx.stats.extra["curve_contacts"] = ds.curve_contacts;
+  return cands;
+}
+
+// Item 5: a poly-Bézier with too many segments or a degenerate control
+// polygon is not constrained.
+bool solver_skipped(const Curve& c, const CassieParams& p, double delta) {
+  if (p.max_solver_segments > 0 && c.segment_count() > p.max_solver_segments) return true;
+  for (std::size_t i = 0; i + 1 < c.control_points.size(); ++i)
+    if (!c.control_points[i].allFinite() || !((c.control_points[i + 1] - c.control_points[i]).norm() > 1e-9 * delta))
+      return true;
+  return false;
+}
+
+// Item 17 and Appendix A: lines.
+CorrectedStroke correct_line(Context& cx, const Curve& line) {
+  CorrectedStroke cs;
+  cs.constraints = detect(cx);
+  const Vec3 a0 = line.control_points.front(), b0 = line.control_points.back();
+  LineResult lr = beautify_line(a0, b0, cs.constraints, cx.th.proximity, cx.th.line_keep, cx.params.angle,
+                                cx.params.line_axis_snap);
+  if (!((lr.b - lr.a).norm() > 1e-9) || !lr.a.allFinite() || !lr.b.allFinite()) lr = LineResult{a0, b0, {}, {}, -1};
+  cs.curve = make_line(lr.a, lr.b);
+  place_on_stroke(cs.constraints, cs.curve);
+  cs.enforced.assign(cs.constraints.size(), false);
+  for (int i : lr.enforced) {
+    cs.enforced[i] = true;
+    cs.placed.push_back({i, cs.constraints[i].t_stroke});
+  }
+  cs.soft.push_back({ConstraintKind::straight, {cx.stroke_ref}, (lr.b - lr.a).normalized(), 1.0, false, true, 0.0});
+  if (lr.axis >= 0)
+    cs.soft.push_back({ConstraintKind::parallel,
+                       {cx.stroke_ref, {ConstraintRef::Kind::axis, static_cast<std::uint64_t>(lr.axis), 0.0}},
+                       Vec3::Unit(lr.axis), 1.0, false, true, 0.0});
+  return cs;
+}
+
+// Items 8–16: a poly-Bézier.
+CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
+  const CassieParams& p = cx.params;
+  const Thresholds& th = cx.th;
+  const Network& net = cx.sketch.network;
+  CorrectedStroke cs;
+  std::vector<Candidate> cands = detect(cx);
+  correct_targets(cands, fitted_in, net, th.correction, p.correction_points);  // item 8
+  place_on_stroke(cands, fitted_in);
+  std::stable_sort(cands.begin(), cands.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.t_stroke < b.t_stroke; });
+  const Curve fitted = p.overlap_cut ? cut_overlaps(fitted_in, cands, net, th.overlap, p.angle) : fitted_in;  // item 9
+  assign_weights(cands, fitted, net, cx.sketch.workspace, p, th);  // item 11
+  const Binding binding = bind_to_anchors(fitted, cands, th.reuse);  // item 12
+
+  // Item 10: closure, a hard constraint in every subset.
+  SearchSettings st;
+  st.lambda = p.lambda;
+  st.fidelity = p.fidelity == FidelityNorm::cassie_app ? FidelityScale{2.0 * th.delta, 0.5} : FidelityScale{};
+  st.tangent_weight = p.tangent_weight;
+  st.planarity_weight = p.planarity ? p.planarity_weight : 0.0;
+  st.planar_distance = th.proximity;
+  st.axis_angle = p.angle;
+  st.min_edge = 1e-6 * th.delta;
+  const int last = static_cast<int>(binding.curve.control_points.size()) - 1;
+  bool start_bound = false, end_bound = false;
+  for (int a : binding.anchor) start_bound |= a == 0, end_bound |= a == last;
+  const Vec3 e0 = fitted.control_points.front(), e1 = fitted.control_points.back();
+  if (fitted.segment_count() > 1 && (e0 - e1).norm() <= th.closure && !(start_bound && end_bound)) {
+    st.closure = true;
+    const Vec3 d0 = tangent(fitted, 0.0), d1 = tangent(fitted, fitted.t_max());
+    if (std::abs(d0.dot(d1)) > 0.5) st.closure_tangent = (d0 + (d0.dot(d1) >= 0 ? d1 : Vec3(-d1))).normalized();
+  }
+  cs.closure_considered = st.closure;
+
+  const SearchResult sr = greedy_search(binding, cands, st);  // items 13–15
+  cx.stats.subsets_tried = sr.subsets_tried;
+  cx.stats.iterations = sr.levels;
+  cx.stats.extra["solves"] = sr.subsets_tried;
+  cs.enforced.assign(cands.size(), false);
+  std::vector<int> anchor = binding.anchor;
+  if (sr.best.feasible) {
+    cs.curve = binding.curve;
+    cs.curve.control_points = sr.best.solve.control_points;
+    for (int i : sr.best.subset) cs.enforced[i] = true;
+    if (st.closure) {
+      cs.curve.control_points.back() = cs.curve.control_points.front();
+      cs.curve.closed = true;
+      cs.closure_enforced = true;
+    }
+    cx.stats.extra["fidelity"] = sr.best.solve.fidelity;
+    cx.stats.extra["energy"] = sr.best.energy;
+  } else {
+    cs.curve = fitted;  // only a non-finite solve falls back (item 15)
+  }
+
+  // Item 16: dangling ends beyond the first/last intersection or plane.
+  if (p.trim_dangling) {
+    std::vector<int> joints;
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      if (cs.enforced[i] && cands[i].kind != TargetKind::grid) joints.push_back(anchor[i] / 3);
+    const int k_before = cs.curve.segment_count();
+    const int removed = trim_dangling(cs.curve, joints, p.trim_fraction, th.trim);
+    const int k_after = cs.curve.segment_count();
+    if (k_after != k_before) {
+      for (std::size_t i = 0; i < cands.size(); ++i) {
+        if (anchor[i] < 0) continue;
+        anchor[i] -= 3 * removed;
+        if (anchor[i] < 0 || anchor[i] > 3 * k_after) anchor[i] = -1, cs.enforced[i] = false;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (cs.enforced[i]) cs.placed.push_back({static_cast<int>(i), anchor[i] / 3.0});
+
+  // Soft terms, reported with what they left.
+  if (p.planarity && sr.best.plane_normal) {
+    Constraint pc{sr.best.plane_axis >= 0 ? ConstraintKind::axis_plane : ConstraintKind::planar,
+                  {cx.stroke_ref}, *sr.best.plane_normal, p.planarity_weight, false, true,
+                  plane_residual(cs.curve.control_points, *sr.best.plane_normal)};
+    if (sr.best.plane_axis >= 0)
+      pc.references.push_back({ConstraintRef::Kind::axis, static_cast<std::uint64_t>(sr.best.plane_axis), 0.0});
+    cs.soft.push_back(pc);
+  }
+  for (const Placement& pl : cs.placed) {
+    const Candidate& c = cands[pl.constraint];
+    if (!c.tangent) continue;
+    ConstraintRef other = c.kind == TargetKind::mirror ? ConstraintRef{ConstraintRef::Kind::mirror, 0, 0.0}
+                                                       : ConstraintRef{ConstraintRef::Kind::curve, c.curve, c.t_curve};
+    cs.soft.push_back({ConstraintKind::tangent, {cx.stroke_ref, other}, *c.tangent, p.tangent_weight, false, true,
+                       line_angle(tangent(cs.curve, std::min(pl.t, cs.curve.t_max())), *c.tangent)});
+  }
+  cs.constraints = std::move(cands);
+  return cs;
+}
+
+// Item 18: the whole stroke onto the mirror plane.
+void project_on_mirror(Context& cx, CorrectedStroke& cs) {
+  if (!cx.use_mirror) return;
+  std::vector<Vec3> hits;
+  for (const Placement& pl : cs.placed)
+    if (is_intersection(cs.constraints[pl.constraint])) hits.push_back(cs.constraints[pl.constraint].target);
+  if (project_onto_mirror(cs.curve, cx.sketch.workspace, hits, cx.th.mirror, cx.th.on_plane, cx.params.angle)) {
+    cs.mirror_copy = false;
+    cx.stats.extra["mirror_projected"] = 1;
+  }
+}
+
+// Item 20: onto the patches.
+void project_on_patches(Context& cx, CorrectedStroke& cs) {
+  if (!cx.params.on_surface || cx.sketch.network.patches().empty() || cs.curve.kind != CurveKind::bezier) return;
+  std::vector<int> anchors;
+  std::vector<CurveId> hits;
+  for (const Placement& pl : cs.placed) {
+    anchors.push_back(static_cast<int>(std::lround(3 * pl.t)));
+    if (is_intersection(cs.constraints[pl.constraint])) hits.push_back(cs.constraints[pl.constraint].curve);
+  }
+  const auto proj = project_on_surface(cx.sketch.network, cs.curve.control_points, anchors, hits, cx.th.surface);
+  if (!proj) return;
+  double moved = 0.0;
+  for (std::size_t i = 0; i < proj->control_points.size(); ++i)
+    moved = std::max(moved, (proj->control_points[i] - cs.curve.control_points[i]).norm());
+  cs.curve.control_points = proj->control_points;
+  for (const Placement& pl : cs.placed)  // enforced intersections stay exact
+    cs.curve.control_points[static_cast<std::size_t>(std::lround(3 * pl.t))] = cs.constraints[pl.constraint].target;
+  if (cs.curve.closed) cs.curve.control_points.back() = cs.curve.control_points.front();
+  cs.soft.push_back({ConstraintKind::on_surface, {cx.stroke_ref}, Vec3::Zero(), 1.0, false, proj->whole, 0.0});
+  cx.stats.extra["on_surface_patch"] = static_cast<double>(proj->patch);
+  cx.stats.extra["on_surface_moved"] = moved;
+}
 
 }  // namespace
 
 Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params) {
   const auto start = std::chrono::steady_clock::now();
   Correction out;
-  const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
   Preprocessed pre;
   try {
-    pre = preprocess_stroke(stroke, params.preprocess);  // thesis §3.2.2
+    pre = preprocess_stroke(stroke, params.preprocess);  // items 1–4
   } catch (const std::exception& e) {
     out.error = e.what();
     return out;
   }
-  const Thresholds th = thresholds(params, scale);
+  const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
   const Workspace& ws = sketch.workspace;
-  const bool use_mirror = params.mirror != MirrorMode::off && ws.mirror_enabled &&
-                          ws.mirror_normal.norm() > 0;
-  const CurveId new_id = sketch.network.next_curve_id();
-  const ConstraintRef stroke_ref{ConstraintRef::Kind::stroke, stroke.id, 0.0};
+  Context cx{stroke, sketch, params, thresholds(params, scale), false,
+             {ConstraintRef::Kind::stroke, stroke.id, 0.0}, {}};
+  cx.use_mirror = params.mirror != MirrorMode::off && ws.mirror_enabled && ws.mirror_normal.norm() > 0;
 
-  std::vector<Candidate> cands;
-  std::vector<bool> enforced;
-  std::vector<Placed> placed;
-  Curve result;
-  std::vector<Constraint> soft;
-
+  CorrectedStroke cs;
   if (pre.is_line) {
-    // Appendix A.
-    const Vec3 a0 = pre.curve.control_points.front(), b0 = pre.curve.control_points.back();
-    cands = detect_candidates(pre.curve, sketch, params, th, use_mirror, false);
-    LineResult lr = beautify_line(a0, b0, cands, th.proximity, params.angle, params.line_axis_snap);
-    if (!((lr.b - lr.a).norm() > 1e-9) || !lr.a.allFinite() || !lr.b.allFinite()) {
-      lr = LineResult{a0, b0, {}, -1};
-    }
-    result = make_line(lr.a, lr.b);
-    enforced.assign(cands.size(), false);
-    for (int i : lr.enforced) {
-      enforced[i] = true;
-      placed.push_back({i, closest_point(result, cands[i].target).t});
-    }
-    Constraint straight{ConstraintKind::straight, {stroke_ref}, (lr.b - lr.a).normalized(), 1.0,
-                        false, true, 0.0};
-    soft.push_back(straight);
-    if (lr.axis >= 0) {
-      Constraint axis{ConstraintKind::parallel,
-                      {stroke_ref, {ConstraintRef::Kind::axis, static_cast<std::uint64_t>(lr.axis), 0.0}},
-                      Vec3::Unit(lr.axis), 1.0, false, true, 0.0};
-      soft.push_back(axis);
-    }
-    out.stats.subsets_tried = 0;
-    out.stats.extra["solves"] = 0;
+    cs = correct_line(cx, pre.curve);
+  } else if (solver_skipped(pre.curve, params, cx.th.delta)) {
+    cs.curve = pre.curve;  // item 5: unconstrained, nothing logged (item 21)
+    cx.stats.extra["solver_skipped"] = 1;
   } else {
-    const auto t_detect = std::chrono::steady_clock::now();
-    cands = detect_candidates(pre.curve, sketch, params, th, use_mirror, true);
-    out.stats.extra["detect_ms"] =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_detect).count();
-    out.stats.extra["control_points"] = static_cast<double>(pre.curve.control_points.size());
-    SoftTerms st;
-    st.planarity_weight = params.planarity_weight;
-    st.tangent_weight = params.tangent_weight;
-    st.min_edge = 1e-6 * th.delta;
-    PlaneFit plane;
-    if (params.planarity) {
-      plane = fit_plane(pre.curve.control_points, th.proximity, params.angle);
-      if (plane.planar) st.plane_normal = plane.normal;
-    }
-    const SearchResult sr = greedy_search(pre.curve, cands, st, params.lambda, th.reuse);
-    enforced.assign(cands.size(), false);
-    if (sr.best.feasible) {
-      result = sr.best.bound.curve;
-      result.control_points = sr.best.solve.control_points;
-      for (std::size_t s = 0; s < sr.best.subset.size(); ++s) {
-        const int i = sr.best.subset[s];
-        enforced[i] = true;
-        if (cands[i].kind == TargetKind::closure) continue;
-        placed.push_back({i, sr.best.bound.control_index[s] / 3.0});
-      }
-      if (std::any_of(sr.best.subset.begin(), sr.best.subset.end(),
-                      [&](int i) { return cands[i].kind == TargetKind::closure; })) {
-        result.control_points.back() = result.control_points.front();
-        result.closed = true;
-      }
-    } else {
-      result = pre.curve;  // singular system even without constraints: keep the fit
-    }
-    out.stats.subsets_tried = sr.subsets_tried;
-    out.stats.iterations = sr.levels;
-    out.stats.extra["solves"] = sr.subsets_tried;
-    out.stats.extra["pruned_subsets"] = sr.pruned;
-    out.stats.extra["fidelity"] = sr.best.feasible ? sr.best.solve.fidelity : 0.0;
-    out.stats.extra["energy"] = sr.best.feasible ? sr.best.energy : 0.0;
-    if (params.planarity && plane.normal.allFinite()) {
-      Constraint pc{plane.axis >= 0 ? ConstraintKind::axis_plane : ConstraintKind::planar,
-                    {stroke_ref},
-                    plane.normal,
-                    params.planarity_weight,
-                    false,
-                    plane.planar,
-                    plane_residual(result.control_points, plane.normal)};
-      if (plane.axis >= 0)
-        pc.references.push_back({ConstraintRef::Kind::axis, static_cast<std::uint64_t>(plane.axis), 0.0});
-      soft.push_back(pc);
-    }
-    // Tangent alignment (eq. 3.8): residual = angle left at the intersection.
-    for (std::size_t i = 0; i < cands.size(); ++i) {
-      if (!cands[i].tangent) continue;
-      double t = cands[i].t_stroke;
-      for (const Placed& p : placed)
-        if (p.candidate == static_cast<int>(i)) t = p.t;
-      Constraint tc{ConstraintKind::tangent,
-                    {stroke_ref, {ConstraintRef::Kind::curve, cands[i].curve, cands[i].t_curve}},
-                    *cands[i].tangent, params.tangent_weight, false, static_cast<bool>(enforced[i]),
-                    line_angle(tangent(result, std::min(t, result.t_max())), *cands[i].tangent)};
-      soft.push_back(tc);
-    }
+    cs = correct_bezier(cx, pre.curve);
   }
-
-  // On-surface projection as a post-process (thesis §3.3.5).
-  if (params.on_surface && !sketch.network.patches().empty() && result.kind == CurveKind::bezier) {
-    std::vector<CurveId> hits;
-    for (const Placed& p : placed)
-      if (cands[p.candidate].kind == TargetKind::curve || cands[p.candidate].kind == TargetKind::node)
-        hits.push_back(cands[p.candidate].curve);
-    const auto proj =
-        project_on_surface(sketch.network, result.control_points, tangent(result, 0.0),
-                           tangent(result, result.t_max()), hits, th.surface, params.angle);
-    if (proj) {
-      const std::vector<Vec3> before = result.control_points;
-      result.control_points = proj->control_points;
-      for (const Placed& p : placed)  // intersections stay exact
-        result.control_points[static_cast<std::size_t>(std::lround(3 * p.t))] = cands[p.candidate].target;
-      if (result.closed) result.control_points.back() = result.control_points.front();
-      double moved = 0.0;
-      for (std::size_t i = 0; i < before.size(); ++i)
-        moved = std::max(moved, (before[i] - result.control_points[i]).norm());
-      soft.push_back({ConstraintKind::on_surface, {stroke_ref}, Vec3::Zero(), 1.0, false, true, 0.0});
-      out.stats.extra["on_surface_patch"] = static_cast<double>(proj->patch);
-      out.stats.extra["on_surface_moved"] = moved;
-    }
-  }
-
-  // The edit: the curve, its mirrored copy, and the nodes.
-  NetworkCurve nc;
-  nc.id = new_id;
-  nc.curve = result;
-  nc.layer = stroke.layer == Layer::automatic ? Layer::free : stroke.layer;
-  nc.source_stroke = stroke.id;
-  nc.keypoints = default_keypoints(result);
-  out.edit.curves_added.push_back(nc);
-  bool copy = false;
-  if (use_mirror && params.mirror == MirrorMode::workspace) {
-    NetworkCurve mc = nc;
-    mc.id = new_id + 1;
-    for (Vec3& p : mc.curve.control_points) p = mirror_point(ws, p);
-    if (mc.curve.closed) mc.curve.control_points.back() = mc.curve.control_points.front();
-    double apart = 0.0;
-    for (std::size_t i = 0; i < mc.curve.control_points.size(); ++i)
-      apart = std::max(apart, (mc.curve.control_points[i] - result.control_points[i]).norm());
-    if (apart > 1e-9) {  // a stroke lying in the plane is its own mirror
-      mc.keypoints = default_keypoints(mc.curve);
-      out.edit.curves_added.push_back(mc);
-      copy = true;
-    }
-  }
-
-  NodeId next_node = sketch.network.next_node_id();
-  auto clamp_t = [](double t, const Curve& c) { return std::clamp(t, 0.0, c.t_max()); };
-  std::vector<Node> replaced;
-  for (const Placed& p : placed) {
-    const Candidate& c = cands[p.candidate];
-    const double t = clamp_t(p.t, result);
-    const bool on_plane = c.kind == TargetKind::mirror;
-    if (c.kind == TargetKind::node) {
-      auto it = std::find_if(replaced.begin(), replaced.end(), [&](const Node& n) { return n.id == c.node; });
-      if (it == replaced.end()) {
-        replaced.push_back(sketch.network.nodes().at(c.node));
-        it = replaced.end() - 1;
-      }
-      it->incidences.push_back({new_id, t});
-      if (copy && (mirror_point(ws, c.target) - c.target).norm() < 1e-9) it->incidences.push_back({new_id + 1, t});
-      continue;
-    }
-    Node n;
-    n.id = next_node++;
-    n.position = c.target;
-    n.incidences.push_back({new_id, t});
-    if (c.kind == TargetKind::curve)
-      n.incidences.push_back({c.curve, clamp_t(c.t_curve, sketch.network.curves().at(c.curve).curve)});
-    if (copy && on_plane) n.incidences.push_back({new_id + 1, t});
-    out.edit.nodes_added.push_back(n);
-  }
-  // The copy meets the mirror images of what the stroke met (mirrored twins
-  // of existing curves), where such curves exist.
-  if (copy) {
-    for (const Placed& p : placed) {
-      const Candidate& c = cands[p.candidate];
-      if (c.kind != TargetKind::curve && c.kind != TargetKind::node) continue;
-      const Vec3 q = mirror_point(ws, c.target);
-      if ((q - c.target).norm() < 1e-9) continue;
-      Node n;
-      n.id = next_node++;
-      n.position = q;
-      n.incidences.push_back({new_id + 1, clamp_t(p.t, result)});
-      for (const CurveHit& h : sketch.network.curves_near(q, 1e-7))
-        if (std::none_of(n.incidences.begin(), n.incidences.end(),
-                         [&](const NodeIncidence& i) { return i.curve == h.curve; }))
-          n.incidences.push_back({h.curve, h.t});
-      if (n.incidences.size() > 1) out.edit.nodes_added.push_back(n);
-      else --next_node;
-    }
-  }
-  out.edit.nodes_replaced = std::move(replaced);
-
-  // Every candidate, enforced or rejected, with its final distance.
-  for (std::size_t i = 0; i < cands.size(); ++i) {
-    const Candidate& c = cands[i];
-    Constraint k;
-    k.kind = kind_of(c.kind);
-    k.references.push_back({ConstraintRef::Kind::stroke, stroke.id, c.t_stroke});
-    switch (c.kind) {
-      case TargetKind::curve: k.references.push_back({ConstraintRef::Kind::curve, c.curve, c.t_curve}); break;
-      case TargetKind::node: k.references.push_back({ConstraintRef::Kind::node, c.node, 0.0}); break;
-      case TargetKind::grid: k.references.push_back({ConstraintRef::Kind::grid, 0, 0.0}); break;
-      case TargetKind::mirror: k.references.push_back({ConstraintRef::Kind::mirror, 0, 0.0}); break;
-      case TargetKind::closure: k.references.push_back({ConstraintRef::Kind::stroke, stroke.id, 1.0}); break;
-    }
-    k.target = c.kind == TargetKind::closure ? Vec3::Zero() : c.target;
-    k.weight = c.weight;
-    k.hard = true;
-    k.enforced = enforced[i];
-    if (c.kind == TargetKind::closure)
-      k.residual = (result.control_points.back() - result.control_points.front()).norm();
-    else
-      k.residual = closest_point(result, c.target).distance;
-    out.constraints.push_back(k);
-  }
-  for (Constraint& c : soft) out.constraints.push_back(std::move(c));
-
-  int rejected = 0;
-  for (bool e : enforced) rejected += !e;
-  out.stats.extra["candidates"] = static_cast<double>(cands.size());
-  out.stats.extra["rejected"] = rejected;
+  cx.stats.extra["control_points"] = static_cast<double>(cs.curve.control_points.size());
+  project_on_mirror(cx, cs);
+  project_on_patches(cx, cs);
+  out = build_correction(stroke, sketch, cs, cx.use_mirror && params.mirror == MirrorMode::workspace);
+  for (const auto& [k, v] : cx.stats.extra) out.stats.extra[k] = v;
+  out.stats.subsets_tried = cx.stats.subsets_tried;
+  out.stats.iterations = cx.stats.iterations;
   out.stats.extra["time_ms"] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return out;

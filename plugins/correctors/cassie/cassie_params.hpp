@@ -1,7 +1,9 @@
 #pragma once
-// CASSIE structuring parameters (CHI 2021 §4.4, thesis §3.2.3.1, Appendix A,
-// §3.3.5) with the defaults of the papers and of CASSIE's public source
-// (data/cassie/README.md). Distances are at zoom 1 and scale as δ(s) = δ/s.
+// CASSIE structuring parameters. Defaults are the original CASSIE app's
+// (../shared/reference/cassie-original-behaviour.md, "CASSIE app, item N"),
+// which agree with the papers (CHI 2021 §4.4, thesis §3.2.3.1, Appendix A,
+// §3.3.5) where those give numbers. Distances are at zoom 1 and scale as
+// δ(s) = δ/s; factors are multiples of δ(s).
 #include <numbers>
 #include <string>
 #include <vector>
@@ -18,29 +20,80 @@ enum class MirrorMode {
   off,        // ignore the mirror plane
 };
 
+// Normalisation of E_fidelity.
+enum class FidelityNorm {
+  cassie_app,  // item 13: 0.5/N·Σ|d|²/(2δ)² + 0.5/(N−1)·Σ|Δd|²/|e₀|²
+  thesis,      // thesis eq. 3.2: 1/(N·L²)·Σ|d|² + 1/(N−1)·Σ|Δd|²/|e₀|²
+};
+
 struct CassieParams {
-  double delta = 0.02;                        // m, δ at zoom 1 (thesis §3.2.3.1)
-  double angle = std::numbers::pi / 6;        // rad, θ (thesis §3.2.3.1)
-  double proximity_factor = 2.0;              // ×δ, r_detect = 2δ (thesis §3.2.3.2)
-  double reuse_factor = 1.0;                  // ×δ, reuse a control point within δ (eq. 3.3–3.4)
-  double mirror_factor = 1.25;                // ×δ, endpoint projection onto the mirror plane
-  double surface_factor = 2.5;                // ×δ, on-surface proximity (public source)
-  double lambda = 0.6;                        // fidelity vs connectivity (CHI eq. 2)
-  double weight_grid = 1.0;                   // CHI eq. 3 weights
-  double weight_grid_endpoint = 1.25;
+  double delta = 0.02;                   // m, δ at zoom 1 (thesis §3.2.3.1)
+  double angle = std::numbers::pi / 6;   // rad, θ (thesis §3.2.3.1)
+  // Detection while drawing (item 6): the brush sphere, stepped in time,
+  // against the collider tubes of the curves.
+  double brush_factor = 1.0;             // ×δ, radius of the brush sphere (see README: the app's 2δ is its diameter)
+  double proximity_factor = 2.0;         // ×δ, r_detect (thesis §3.2.3.2): grid, line snap, planarity
+  double collider_radius = 0.0015;       // m, tube around each curve (not scaled)
+  double brush_step = 0.02;              // s, physics step of the brush test
+  double merge_factor = 0.5;             // ×δ, consecutive constraints this close are one (item 7)
+  double plane_merge_factor = 1.0;       // ×δ, two plane constraints this close are one
+  // Constraints (items 8, 11, 12).
+  double reuse_factor = 1.0;             // ×δ, reuse an anchor within δ (item 12)
+  double node_snap_factor = 1.0;         // ×δ, snap to an end node of the crossed piece (item 8)
+  double correction_factor = 0.5;        // ×δ, targets tried on the old curve: ±δ/2
+  int correction_points = 6;             // ... this many
+  double weight_grid = 1.0;              // grid point and mirror plane (CHI eq. 3: 1)
+  double weight_endpoint = 1.25;         // at least this within δ of a stroke end (item 11)
   double weight_curve = 1.5;
   double weight_node = 2.0;
-  double weight_closure = 1.5;                // not in the paper: a self-intersection
-  double tangent_weight = 1.0;                // E_tangent multiplier (eq. 3.8)
-  double planarity_weight = 1.0;              // E_planar multiplier (eq. 3.9)
+  double tangent_bonus = 0.5;            // added to the weight of an aligned constraint
+  double lambda = 0.6;                   // fidelity vs connectivity (CHI eq. 2)
+  FidelityNorm fidelity = FidelityNorm::cassie_app;
+  double tangent_weight = 2.0;           // E_tangent = w/|e₀|²·|T×e|² (item 14: 2)
+  double planarity_weight = 1.0;         // E_planar multiplier (item 14: 1)
   bool planarity = true;
   bool tangents = true;
-  bool line_axis_snap = true;                 // Appendix A.1
-  bool on_surface = true;                     // thesis §3.3.5
-  int max_candidates = 12;                    // cap on detected intersections (closest kept)
+  // Stroke ends (items 9, 10, 16).
+  bool overlap_cut = true;               // item 9
+  double overlap_factor = 2.0;           // ×δ
+  double closure_factor = 2.0;           // ×δ, ends this close close the stroke (item 10)
+  bool trim_dangling = true;             // item 16
+  double trim_fraction = 0.15;           // a dangling piece under 15 % of the length ...
+  double trim_factor = 3.0;              // ... and 3δ is cut
+  int max_solver_segments = 10;          // item 5: longer strokes are not constrained (0: no limit)
+  // Lines (item 17).
+  bool line_axis_snap = true;
+  double line_keep_factor = 0.2;         // ×δ: one of two constraints this close; node within this
+  // Mirror (item 18) and surfaces (item 20).
+  double mirror_factor = 1.25;           // ×δ, whole-stroke projection onto the mirror plane
+  double mirror_on_plane_factor = 0.1;   // ×δ, an intersection "on the plane"
+  double surface_factor = 2.5;           // ×δ, control points projected onto a patch
+  bool on_surface = true;
   MirrorMode mirror = MirrorMode::workspace;
-  PreprocessParams preprocess;                // hooks, lines, RDP, G1 fit (thesis §3.2.2)
+  PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
 };
+
+// Thresholds of one stroke: the factors above times δ(s) = δ/s.
+struct Thresholds {
+  double delta = 0.02;
+  double brush = 0.02;      // brush radius
+  double contact = 0.0215;  // brush radius + collider tube
+  double proximity = 0.04;  // r_detect
+  double grid = 0.04;       // grid points within this of a sample (item 19: 2δ)
+  double merge = 0.01;
+  double plane_merge = 0.02;
+  double reuse = 0.02;
+  double node_snap = 0.02;
+  double correction = 0.01;
+  double overlap = 0.04;
+  double closure = 0.04;
+  double trim = 0.06;
+  double line_keep = 0.004;
+  double mirror = 0.025;
+  double on_plane = 0.002;
+  double surface = 0.05;
+};
+Thresholds thresholds(const CassieParams& p, double workspace_scale);
 
 std::vector<ParamSpec> param_specs();
 CassieParams params_from(const Params& p);

@@ -35,20 +35,24 @@ void add_edge_form(std::vector<Eigen::Triplet<double>>& t, int i, const Mat3& q)
   add_block(t, i + 1, i, -q);
 }
 
+double position_scale(const std::vector<Vec3>& p, double min_edge, const FidelityScale& f) {
+  return f.position_scale > 0 ? f.position_scale : span_of(p, min_edge);
+}
+
 }  // namespace
 
 double fidelity_energy(const std::vector<Vec3>& input, const std::vector<Vec3>& points,
-                       double min_edge) {
+                       double min_edge, const FidelityScale& scale) {
   const std::size_t m = input.size();
   if (m < 2 || points.size() != m) return 0.0;
-  const double l = span_of(input, min_edge);
+  const double l = position_scale(input, min_edge, scale);
   double pos = 0.0, slope = 0.0;
   for (std::size_t i = 0; i < m; ++i) pos += (points[i] - input[i]).squaredNorm();
   for (std::size_t i = 0; i + 1 < m; ++i) {
     const double e = edge_length(input, i, min_edge);
     slope += ((points[i + 1] - points[i]) - (input[i + 1] - input[i])).squaredNorm() / (e * e);
   }
-  return pos / (static_cast<double>(m) * l * l) + slope / static_cast<double>(m - 1);
+  return scale.factor * (pos / (static_cast<double>(m) * l * l) + slope / static_cast<double>(m - 1));
 }
 
 SolveResult solve_constrained(const SolveProblem& pr) {
@@ -63,14 +67,15 @@ SolveResult solve_constrained(const SolveProblem& pr) {
 
   // E_fidelity (eq. 3.2): position term and slope term. A·P − B is half the
   // gradient, consistently for every term.
-  const double w_pos = 1.0 / (m * std::pow(span_of(p0, me), 2));
+  const double f = pr.fidelity.factor;
+  const double w_pos = f / (m * std::pow(position_scale(p0, me, pr.fidelity), 2));
   for (int i = 0; i < m; ++i) {
     add_block(a, i, i, w_pos * Mat3::Identity());
     rhs.segment<3>(3 * i) += w_pos * p0[i];
   }
   for (int i = 0; i + 1 < m; ++i) {
     const double e = edge_length(p0, i, me);
-    const double w = 1.0 / ((m - 1) * e * e);
+    const double w = f / ((m - 1) * e * e);
     add_edge_form(a, i, w * Mat3::Identity());
     const Vec3 eb = p0[i + 1] - p0[i];
     rhs.segment<3>(3 * (i + 1)) += w * eb;
@@ -135,7 +140,9 @@ SolveResult solve_constrained(const SolveProblem& pr) {
   Eigen::SparseMatrix<double> am(n, n), cm(nc, n);
   am.setFromTriplets(a.begin(), a.end());
   cm.setFromTriplets(c.begin(), c.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(am);
+  // A is block tridiagonal (3×3 blocks, control points in curve order): the
+  // natural ordering has no fill, so no reordering is computed.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(am);
   if (ldlt.info() != Eigen::Success) return res;
   const Eigen::VectorXd dv = Eigen::Map<const Eigen::VectorXd>(d.data(), nc);
   Eigen::MatrixXd y;  // A⁻¹Cᵀ, n x nc
@@ -183,7 +190,7 @@ SolveResult solve_constrained(const SolveProblem& pr) {
   if (pr.closure)
     res.max_constraint_residual = std::max(
         res.max_constraint_residual, (x.segment<3>(0) - x.segment<3>(3 * (m - 1))).norm());
-  res.fidelity = fidelity_energy(p0, res.control_points, me);
+  res.fidelity = fidelity_energy(p0, res.control_points, me, pr.fidelity);
   // A residual far above rounding means the targets were inconsistent.
   res.ok = std::isfinite(res.fidelity) && res.max_constraint_residual < 1e-7;
   return res;

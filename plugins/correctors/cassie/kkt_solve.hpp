@@ -25,6 +25,14 @@ struct TangentTarget {
   double weight = 1.0;
 };
 
+// E_fidelity = factor·(1/(M·S²)·Σ|P_i − P̄_i|² + 1/(M−1)·Σ|Δe_i|²/|ē_i|²),
+// with S = position_scale, or the span L of eq. 3.2 when position_scale is
+// 0 (thesis); the CASSIE app uses S = 2δ and factor 0.5 (item 13).
+struct FidelityScale {
+  double position_scale = 0.0;  // m
+  double factor = 1.0;
+};
+
 struct SolveProblem {
   Curve input;  // P̄: the (possibly split) fitted curve
   std::vector<PointTarget> points;
@@ -35,6 +43,7 @@ struct SolveProblem {
   // Edges shorter than this (m) get this length in the normalisations and
   // their joints no G1 row (the linearisation needs a direction).
   double min_edge = 1e-6;
+  FidelityScale fidelity;
 };
 
 struct SolveResult {
@@ -44,9 +53,9 @@ struct SolveResult {
   double max_constraint_residual = 0.0;  // m, over point and closure targets
 };
 
-// E_fidelity (thesis eq. 3.2) of `points` against `input` (same size M >= 2).
+// E_fidelity of `points` against `input` (same size M >= 2).
 double fidelity_energy(const std::vector<Vec3>& input, const std::vector<Vec3>& points,
-                       double min_edge);
+                       double min_edge, const FidelityScale& scale = {});
 
 // Solves eq. 3.11 by block elimination (sparse LDLT of A, dense LDLT of the
 // Schur complement C A⁻¹ Cᵀ) and one step of iterative

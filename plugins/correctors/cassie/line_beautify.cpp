@@ -1,81 +1,98 @@
 #include "line_beautify.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sketchlab::cassie {
 namespace {
 
-// Axis within `angle` of direction d (unit), or -1.
-int near_axis(const Vec3& d, double angle) {
-  for (int k = 0; k < 3; ++k)
-    if (std::abs(d[k]) >= std::cos(angle)) return k;
-  return -1;
+// Parameter of p on the line a + u (b − a).
+double along(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double l2 = d.squaredNorm();
+  return l2 > 0 ? (p - a).dot(d) / l2 : 0.0;
 }
 
-Vec3 project_on_line(const Vec3& p, const Vec3& o, const Vec3& u) { return o + (p - o).dot(u) * u; }
+Vec3 project_on_line(const Vec3& p, const Vec3& o, const Vec3& through) {
+  const Vec3 d = through - o;
+  const double l2 = d.squaredNorm();
+  return l2 > 0 ? Vec3(o + (p - o).dot(d) / l2 * d) : o;
+}
+
+double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double u = std::clamp(along(p, a, b), 0.0, 1.0);
+  return (a + u * (b - a) - p).norm();
+}
 
 }  // namespace
 
 LineResult beautify_line(const Vec3& a0, const Vec3& b0, const std::vector<Candidate>& cands,
-                         double snap, double angle, bool axis_snap) {
-  LineResult r{a0, b0, {}, -1};
-  // A.1: the candidates nearest to each end.
-  int first = -1, last = -1;
-  for (int i = 0; i < static_cast<int>(cands.size()); ++i) {
-    if (cands[i].kind == TargetKind::closure) continue;
-    if (first < 0 || cands[i].t_stroke < cands[first].t_stroke) first = i;
-    if (last < 0 || cands[i].t_stroke > cands[last].t_stroke) last = i;
-  }
-  if (first >= 0 && last >= 0 && (cands[first].target - cands[last].target).norm() < 1e-9) last = first;
-  const double len = (b0 - a0).norm();
-  Vec3 a = a0, b = b0;
-  if (first >= 0 && last != first) {
-    const Vec3 p = cands[first].target, q = cands[last].target;
-    const bool na = (p - a0).norm() <= snap, nb = (q - b0).norm() <= snap;
-    // A.2: endpoints near a constraint snap to it; the others are projected
-    // onto the line through the two constraints.
-    const Vec3 u = (q - p).normalized();
-    a = na ? p : project_on_line(a0, p, u);
-    b = nb ? q : project_on_line(b0, p, u);
-    r.enforced = {first, last};
-  } else if (first >= 0) {
-    const Vec3 p = cands[first].target;
-    const double da = (p - a0).norm(), db = (p - b0).norm();
-    if (std::min(da, db) <= snap) {
-      (da <= db ? a : b) = p;
-    } else {
-      // Translate so that the segment passes through p.
-      const Vec3 u = (b0 - a0) / len;
-      const Vec3 shift = p - project_on_line(p, a0, u);
-      a = a0 + shift;
-      b = b0 + shift;
+                         double snap, double keep, double angle, bool axis_snap) {
+  LineResult r{a0, b0, {}, {}, -1};
+  // The constraints used: the first and the one farthest from it.
+  std::vector<int> use;
+  if (!cands.empty()) {
+    use.push_back(0);
+    int far = -1;
+    double far_d = -1.0;
+    for (int i = 1; i < static_cast<int>(cands.size()); ++i) {
+      const double d = (cands[i].target - cands[0].target).norm();
+      if (d > far_d) far_d = d, far = i;
     }
-    r.enforced = {first};
-    if (axis_snap && (b - a).norm() > 0) {
-      const Vec3 d = (b - a).normalized();
-      const int k = near_axis(d, angle);
-      if (k >= 0) {
-        // Rotate about the constrained point, keeping the length.
-        const Vec3 axis = d[k] >= 0 ? Vec3::Unit(k) : Vec3(-Vec3::Unit(k));
-        const double sa = (p - a).dot(d), l = (b - a).norm();
-        a = p - sa * axis;
-        b = a + l * axis;
+    if (far >= 0) {
+      if (far_d >= keep) use.push_back(far);
+      else if (!is_intersection(cands[0]) && is_intersection(cands[far])) use[0] = far;
+    }
+  }
+  r.used = use;
+  Vec3 a = a0, b = b0;
+  // Match to ends by position along the line.
+  int ca = -1, cb = -1;
+  if (use.size() == 2) {
+    const bool first_at_a = along(cands[use[0]].target, a0, b0) <= along(cands[use[1]].target, a0, b0);
+    ca = first_at_a ? use[0] : use[1];
+    cb = first_at_a ? use[1] : use[0];
+  } else if (use.size() == 1) {
+    (along(cands[use[0]].target, a0, b0) <= 0.5 ? ca : cb) = use[0];
+  }
+  Vec3 pivot = a0;
+  bool pivot_set = false;
+  if (ca >= 0) {
+    const Vec3 p = cands[ca].target;
+    const bool snaps = (p - a).norm() <= snap || along(p, a0, b0) < 0.0;
+    a = snaps ? p : project_on_line(a, p, b);
+    pivot = snaps ? a : p;
+    pivot_set = true;
+  }
+  if (cb >= 0) {
+    const Vec3 q = cands[cb].target;
+    const bool snaps = (q - b).norm() <= snap || along(q, a0, b0) > 1.0;
+    b = snaps ? q : project_on_line(b, a, q);
+    if (!pivot_set) pivot = snaps ? b : q;
+  }
+  // Axis snap with at most one constraint.
+  const double len = (b - a).norm();
+  if (axis_snap && use.size() <= 1 && len > 0) {
+    const Vec3 d = (b - a) / len;
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(d[k]) < std::cos(angle)) continue;
+      const Vec3 axis = d[k] >= 0 ? Vec3::Unit(k) : Vec3(-Vec3::Unit(k));
+      // Rotate about the pivot, keeping the distances to it along the line.
+      const double sa = (a - pivot).dot(d), sb = (b - pivot).dot(d);
+      const Vec3 na = pivot + sa * axis, nb = pivot + sb * axis;
+      const double moved = std::max((na - a).norm(), (nb - b).norm());
+      if (moved < snap) {
+        a = na;
+        b = nb;
         r.axis = k;
       }
-    }
-  } else if (axis_snap && len > 0) {
-    const Vec3 d = (b0 - a0) / len;
-    const int k = near_axis(d, angle);
-    if (k >= 0) {
-      const Vec3 axis = d[k] >= 0 ? Vec3::Unit(k) : Vec3(-Vec3::Unit(k));
-      const Vec3 mid = 0.5 * (a0 + b0);
-      a = mid - 0.5 * len * axis;
-      b = mid + 0.5 * len * axis;
-      r.axis = k;
+      break;
     }
   }
   r.a = a;
   r.b = b;
+  for (int i : use)
+    if (distance_to_segment(cands[i].target, a, b) <= keep) r.enforced.push_back(i);
   return r;
 }
 

@@ -1,24 +1,31 @@
 #pragma once
-// Straight lines (thesis Appendix A; CHI supplemental): at most two
-// intersections, the ones nearest to each end; an endpoint within 2δ of its
-// constraint snaps to it, otherwise the line is projected onto (two) or
-// translated through (one) the constraints; a free direction within θ of an
-// axis is aligned to it.
+// Straight lines (CASSIE app item 17, `LineCurve.Constrain/ConstrainTo`;
+// thesis Appendix A): the line's ends are moved onto at most two raw
+// constraints (no correction, no overlap cut), then possibly onto an axis.
 #include <vector>
 
-#include "candidates.hpp"
+#include "constraint_types.hpp"
 
 namespace sketchlab::cassie {
 
 struct LineResult {
   Vec3 a = Vec3::Zero(), b = Vec3::Zero();
-  std::vector<int> enforced;  // candidate indices
-  int axis = -1;              // axis the direction was aligned to, or -1
+  std::vector<int> used;      // constraint indices the line was fitted to (0, 1 or 2)
+  std::vector<int> enforced;  // those the final line passes within `keep` of (they get a node)
+  int axis = -1;              // axis the direction was snapped to, or -1
 };
 
-// a, b: the detected line's ends; candidates detected on make_line(a, b)
-// (t_stroke in [0, 1]; closure ignored); snap = 2δ(s).
-LineResult beautify_line(const Vec3& a, const Vec3& b, const std::vector<Candidate>& candidates,
-                         double snap, double angle, bool axis_snap);
+// a, b: the detected line's ends; `constraints` in detection order. With
+// more than two, the first detected and the one farthest from it are used;
+// of two closer than `keep` one is kept (an intersection preferred). Each is
+// matched to the end it is nearer along the line; an end snaps to its
+// constraint when within `snap` of it or when the constraint lies beyond
+// it; otherwise end a is projected onto the line from its constraint to b,
+// then b onto the line from the new a to its constraint. With at most one
+// constraint and `axis_snap`, a direction within `angle` of an axis (the
+// first such) is rotated onto it, about a (no constraint) or the
+// constrained point, when the other end moves less than `snap`.
+LineResult beautify_line(const Vec3& a, const Vec3& b, const std::vector<Candidate>& constraints,
+                         double snap, double keep, double angle, bool axis_snap);
 
 }  // namespace sketchlab::cassie

@@ -49,41 +49,36 @@ std::optional<MeshPoint> closest_on_mesh(const Mesh& mesh, const Vec3& p) {
 
 std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<Vec3>& points,
-                                                    const Vec3& t0, const Vec3& t1,
-                                                    const std::vector<CurveId>& boundary_hits,
-                                                    double max_distance, double angle) {
+                                                    const std::vector<int>& anchors,
+                                                    const std::vector<CurveId>& intersections,
+                                                    double max_distance) {
   if (points.empty()) return std::nullopt;
-  Box3 stroke_box;
-  for (const Vec3& p : points) stroke_box.extend(p);
   for (const auto& [id, patch] : network.patches()) {
     if (patch.mesh.faces.empty()) continue;
+    std::vector<std::optional<MeshPoint>> near(points.size());
+    bool touched = false;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      near[i] = closest_on_mesh(patch.mesh, points[i]);
+      if (near[i] && near[i]->distance <= max_distance) touched = true;
+      else near[i].reset();
+    }
+    if (!touched) continue;
     Box3 box;
     for (const Vec3& v : patch.mesh.vertices) box.extend(v);
     box.min().array() -= max_distance;
     box.max().array() += max_distance;
-    if (!box.contains(stroke_box)) continue;
-    // Non-breaking: at most one place on the boundary cycle.
+    bool whole = std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return box.contains(p); });
+    for (int a : anchors) whole = whole && near[static_cast<std::size_t>(a)].has_value();
     std::set<CurveId> boundary;
     for (const OrientedSegment& s : patch.boundary) boundary.insert(s.curve);
     int on_boundary = 0;
-    for (CurveId c : boundary_hits) on_boundary += boundary.count(c) > 0;
-    if (on_boundary >= 2) continue;
-    SurfaceProjection proj{id, {}};
-    bool ok = true;
-    for (const Vec3& p : points) {
-      const auto mp = closest_on_mesh(patch.mesh, p);
-      if (!mp || mp->distance > max_distance) {
-        ok = false;
-        break;
-      }
-      proj.control_points.push_back(mp->point);
+    for (CurveId c : intersections) on_boundary += boundary.count(c) > 0;
+    whole = whole && on_boundary <= 1;
+    SurfaceProjection proj{id, points, whole};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const bool end = i == 0 || i + 1 == points.size();
+      if (near[i] && (whole || end)) proj.control_points[i] = near[i]->point;
     }
-    if (!ok) continue;
-    // Alignment: end tangents not within θ of the normal at the nearest point.
-    const auto m0 = closest_on_mesh(patch.mesh, points.front());
-    const auto m1 = closest_on_mesh(patch.mesh, points.back());
-    if (std::abs(t0.dot(m0->normal)) >= std::cos(angle) || std::abs(t1.dot(m1->normal)) >= std::cos(angle))
-      continue;
     return proj;
   }
   return std::nullopt;

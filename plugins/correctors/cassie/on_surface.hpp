@@ -1,7 +1,6 @@
 #pragma once
-// On-surface strokes (thesis §3.3.5): a stroke whose control points all lie
-// near one patch, whose end tangents are not within θ of the patch normal,
-// and which does not split the patch's boundary cycle, is projected onto it.
+// On-surface strokes (thesis §3.3.5; CASSIE app item 20): strokes drawn on a
+// patch are projected onto its mesh.
 #include <optional>
 #include <set>
 #include <vector>
@@ -23,16 +22,22 @@ std::optional<MeshPoint> closest_on_mesh(const Mesh& mesh, const Vec3& p);
 struct SurfaceProjection {
   PatchId patch = 0;
   std::vector<Vec3> control_points;  // projected
+  bool whole = false;                // every control point near the patch, else the ends only
 };
 
-// `points`: the corrected control points; t0, t1: unit tangents at the ends;
-// `boundary_hits`: curves the stroke was connected to (a stroke meeting the
-// patch boundary at two or more places would split its cycle). First patch
-// (by id) that qualifies.
+// Item 20 (`Beautifier.ProjectOnSurfaces`). The patch is the first (by id)
+// with a control point within `max_distance` of its mesh (the brush touched
+// it). The whole stroke (each control point within `max_distance`) is
+// projected when the patch spans it (its box grown by max_distance holds
+// every control point), every constrained anchor (`anchors`: control point
+// indices) is on the patch (within max_distance) and the stroke meets the
+// patch's boundary curves at most once (`intersections`: the curves met);
+// otherwise only the two ends, when within max_distance. No test against the
+// patch normal. nullopt when no patch is near.
 std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<Vec3>& points,
-                                                    const Vec3& t0, const Vec3& t1,
-                                                    const std::vector<CurveId>& boundary_hits,
-                                                    double max_distance, double angle);
+                                                    const std::vector<int>& anchors,
+                                                    const std::vector<CurveId>& intersections,
+                                                    double max_distance);
 
 }  // namespace sketchlab::cassie

@@ -1,61 +1,63 @@
 #pragma once
-// Selecting which candidate intersections to enforce (CHI §4.3, thesis
-// §3.2.4.4): greedy removal minimising E = λ·E_fidelity + (1−λ)·E_connectivity.
+// Selecting which constraints to enforce (CHI §4.3; CASSIE app items 10, 13,
+// 14, 15): greedy removal minimising E = λ·E_fidelity + (1−λ)·E_connectivity
+// over the constraints bound to an anchor, with the stroke's closure (if
+// any) a hard constraint in every subset.
 #include <optional>
 #include <vector>
 
-#include "candidates.hpp"
+#include "anchor_binding.hpp"
 #include "kkt_solve.hpp"
 
 namespace sketchlab::cassie {
 
-// The fitted curve with joints inserted for a subset of candidates
-// (eq. 3.3: reuse a joint within the reuse distance, else de Casteljau split).
-struct BoundCurve {
-  Curve curve;
-  std::vector<int> control_index;  // per subset entry: constrained control point
-};
-
-BoundCurve bind_candidates(const Curve& fitted, const std::vector<Candidate>& candidates,
-                           const std::vector<int>& subset, double reuse);
-
-// Soft terms shared by every subset.
-struct SoftTerms {
-  std::optional<Vec3> plane_normal;
-  double planarity_weight = 1.0;
-  double tangent_weight = 1.0;
-  double min_edge = 1e-6;
+struct SearchSettings {
+  double lambda = 0.6;
+  FidelityScale fidelity;
+  double tangent_weight = 2.0;        // E_tangent multiplier (item 14)
+  double planarity_weight = 1.0;      // E_planar multiplier; 0 disables planarity
+  double planar_distance = 0.04;      // m: planar when every control point is this close (2δ)
+  double axis_angle = 0.5235987755982988;  // rad: plane normal snapped to an axis within this
+  double min_edge = 1e-8;             // m, see SolveProblem
+  bool closure = false;               // item 10: ends joined in every subset
+  // Item 10: the end-tangent term of a closed stroke, unit direction both end
+  // edges are drawn towards (when the end tangents agree).
+  std::optional<Vec3> closure_tangent;
 };
 
 struct SubsetResult {
-  bool feasible = false;  // false: incompatible targets (pruned, not solved) or singular
-  std::vector<int> subset;  // candidate indices, ascending
-  BoundCurve bound;
+  bool feasible = false;      // solved with a finite result
+  std::vector<int> subset;    // constraint indices (bound ones), ascending
   SolveResult solve;
+  std::optional<Vec3> plane_normal;  // E_planar normal used, when planar
+  int plane_axis = -1;        // axis the normal was snapped to, or -1
   double connectivity = 1.0;  // CHI eq. 3
   double energy = 0.0;        // CHI eq. 2
 };
 
-// E_connectivity = exp(−(Σ b_i w_i / Σ w_i)²) (CHI eq. 3).
-double connectivity_energy(const std::vector<Candidate>& candidates, const std::vector<int>& subset);
+// E_connectivity = exp(−(Σ_subset w / Σ_bound w)²) (CHI eq. 3; item 13:
+// over the constraints that got an anchor only).
+double connectivity_energy(const std::vector<Candidate>& constraints, const Binding& binding,
+                           const std::vector<int>& subset);
 
-// Binds and solves one subset; infeasible without solving when two
-// candidates pin one control point (closure joins both ends) to different
-// places ("incompatible", CHI §4.3).
-SubsetResult evaluate_subset(const Curve& fitted, const std::vector<Candidate>& candidates,
-                             const std::vector<int>& subset, const SoftTerms& soft,
-                             double lambda, double reuse, int& solves);
+// Solves one subset on the bound curve: point targets at the anchors,
+// tangent targets of aligned constraints, the closure, E_planar when the
+// control points with the subset's targets in place fit a plane within
+// planar_distance (item 14: tested per subset, normal snapped to an axis).
+SubsetResult evaluate_subset(const Binding& binding, const std::vector<Candidate>& constraints,
+                             const std::vector<int>& subset, const SearchSettings& settings);
 
 struct SearchResult {
   SubsetResult best;
-  int subsets_tried = 0;  // subsets whose system was solved
+  int subsets_tried = 0;  // systems solved
   int levels = 0;         // greedy rounds
-  int pruned = 0;         // subsets skipped as incompatible
 };
 
-// Starts from all candidates and repeatedly removes the one whose removal
-// lowers E the most, while E decreases (CHI §4.3).
-SearchResult greedy_search(const Curve& fitted, const std::vector<Candidate>& candidates,
-                           const SoftTerms& soft, double lambda, double reuse);
+// Item 15 (`GetBestFit/GetBestSubset`): all bound constraints first; each
+// round tries removing each of the current ones and moves to the child of
+// lowest energy while that lowers E. A subset whose solve fails (not finite)
+// is skipped; when every one fails `best` is infeasible.
+SearchResult greedy_search(const Binding& binding, const std::vector<Candidate>& constraints,
+                           const SearchSettings& settings);
 
 }  // namespace sketchlab::cassie

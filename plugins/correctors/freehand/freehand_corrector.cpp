@@ -1,7 +1,10 @@
-// The papers' no-auto-correct baseline (CASSIE's "Freehand" system,
-// ScaffoldSketch's "no auto-correct" condition): each stroke is preprocessed
-// (hook removal, line detection, G1 poly-Bézier fit) and added as one curve,
-// with no constraints.
+// The papers' no-auto-correct baseline: CASSIE's "Freehand" system (CHI 2021
+// §6; the original app fits each stroke and nothing else) and
+// ScaffoldSketch's "no auto-correct" condition. Each stroke is preprocessed
+// (by default as the CASSIE app does in its Freehand system: input
+// filtering, the line test, corners and Schneider fit, and no hook removal:
+// its curves end exactly at the raw samples' ends) and added as one curve,
+// with no constraints. See README.md.
 #include <numbers>
 
 #include "sketchlab/plugin/plugin_api.hpp"
@@ -11,9 +14,17 @@ namespace {
 
 using namespace sketchlab;
 
+// CASSIE's Freehand system: the app's preprocessing without hook removal.
+PreprocessParams freehand_system() {
+  PreprocessParams p = cassie_app_preprocess();
+  p.remove_hooks = false;
+  return p;
+}
+
 class FreehandCorrector : public Corrector {
  public:
   explicit FreehandCorrector(const Params& p) {
+    params_ = p.string("rules") == "cassie_app" ? freehand_system() : PreprocessParams{};
     params_.delta = p.real("delta");
     params_.fit_error_factor = p.real("fit_error");
     params_.max_g1_angle = p.real("sharp_angle");
@@ -31,21 +42,24 @@ class FreehandCorrector : public Corrector {
 };
 
 PluginDescriptor describe() {
-  const PreprocessParams d;
+  const PreprocessParams d = freehand_system();
   std::vector<ParamSpec> specs{
+      {"rules", ParamType::choice, std::string("cassie_app"), {}, {}, {"cassie_app", "sketchlab"}, "",
+       "cassie_app: the CASSIE app's preprocessing (input filtering, line test, corners and fit; "
+       "reference items 1-4); sketchlab: the thesis §3.2.2 reading (kernel preprocess.hpp)"},
       {"delta", ParamType::real, d.delta, 0.001, 0.5, {}, "m",
        "small distance δ at zoom 1 (CASSIE default 0.02); thresholds are δ/s"},
       {"fit_error", ParamType::real, d.fit_error_factor, 0.01, 5.0, {}, "δ",
        "poly-Bézier fitting tolerance as a multiple of δ (CASSIE: 0.5)"},
       {"sharp_angle", ParamType::real, d.max_g1_angle, 0.05, std::numbers::pi / 2, {}, "rad",
-       "tangent turn above which a joint is sharp (π/4)"},
+       "direction turn above which a sample is a corner (π/4)"},
       {"detect_lines", ParamType::boolean, d.detect_lines, {}, {}, {}, "",
        "fit straight strokes with a line"},
       {"remove_hooks", ParamType::boolean, d.remove_hooks, {}, {}, {}, "",
-       "cut hooks at both ends of the stroke"},
+       "cut hooks at both ends of the stroke (off: CASSIE's Freehand system keeps the raw ends)"},
   };
   return corrector_descriptor<FreehandCorrector>(
-      "freehand", "1.0", "no auto-correct baseline: preprocessing and curve fitting only",
+      "freehand", "1.1", "no auto-correct baseline (CASSIE's Freehand system): preprocessing and curve fitting only",
       std::move(specs));
 }
 

@@ -17,7 +17,11 @@ using nlohmann::json;
 
 namespace {
 
-const char* const sessions[] = {"hat", "chair", "01-2-1", "02-1-2"};
+// Every bundled session: six showcase sketches and every session of two study
+// participants in the three systems (data/cassie/README.md).
+const char* const sessions[] = {"hat",    "chair",  "flower", "teapot", "vintage_car", "hmd_sutherland",
+                                "01-0-1", "01-0-2", "01-1-1", "01-1-2", "01-2-1",      "01-2-2",
+                                "02-0-1", "02-0-2", "02-1-1", "02-1-2", "02-2-1",      "02-2-2"};
 
 std::filesystem::path cassie_dir() { return test::source_path("data/cassie"); }
 
@@ -100,6 +104,11 @@ TEST_CASE("CASSIE import: strokes, deletions and reference curves match the hist
       CHECK(s.workspace_scale <= 3.0);
       if (h["deletion_time"].is_null()) {
         CHECK(deletions.count(s.id) == 0);
+      } else if (h["deletion_time"].get<double>() < h["creation_time"].get<double>()) {
+        // flower's quirk: the delete action raw_data logged after creation.
+        ++deleted;
+        REQUIRE(deletions.count(s.id) == 1);
+        CHECK(deletions.at(s.id) > h["creation_time"].get<double>());
       } else {
         ++deleted;
         REQUIRE(deletions.count(s.id) == 1);
@@ -229,6 +238,33 @@ TEST_CASE("infer_mirror_plane recovers an axis plane and rejects oblique twins",
   CHECK_FALSE(infer_mirror_plane({}).found);
 }
 
+TEST_CASE("CASSIE import: flower's stroke deleted before its creation imports with a warning",
+          "[recording][cassie]") {
+  std::vector<std::string> warnings;
+  const Recording r = import_cassie_session(cassie_dir(), "flower", &warnings);
+  // Strokes 10 and 11 (mirrored twins, created at 81.19431) have
+  // deletion_time 73.35294; raw_data logs "delete stroke 10" at 95.20064.
+  REQUIRE(warnings.size() == 2);
+  CHECK_THAT(warnings[0], Catch::Contains("flower.json") && Catch::Contains("stroke id 10") &&
+                              Catch::Contains("before creation_time") && Catch::Contains("95.20064"));
+  CHECK_THAT(warnings[1], Catch::Contains("stroke id 11"));
+  CHECK_THAT(r.header.source.at("import_warnings"), Catch::Contains("stroke id 10"));
+  std::map<StrokeId, double> created, deleted;
+  for (const Event& e : r.events) {
+    if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) created[s->stroke.id] = e.time;
+    if (const auto* d = std::get_if<DeleteStrokeEvent>(&e.payload)) deleted[d->stroke] = e.time;
+  }
+  CHECK(created.size() == 131);
+  for (StrokeId id : {StrokeId{10}, StrokeId{11}}) {
+    CHECK(created.at(id) == 81.19431);
+    CHECK(deleted.at(id) == 95.20064);
+  }
+  // Sessions without quirks import silently.
+  import_cassie_session(cassie_dir(), "hat", &warnings);
+  CHECK(warnings.empty());
+  CHECK(import_cassie_session(cassie_dir(), "hat").header.source.count("import_warnings") == 0);
+}
+
 TEST_CASE("CASSIE import errors name the file and the field", "[recording][cassie]") {
   const std::filesystem::path dir = test::binary_path("tests/scratch/cassie_errors");
   std::filesystem::remove_all(dir);
@@ -258,4 +294,34 @@ TEST_CASE("CASSIE import errors name the file and the field", "[recording][cassi
   write(R"([{"id":0,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
   const Recording ok = import_cassie_session(dir, "s");
   CHECK(ok.events.size() == 2 + 3);  // stroke, reference, 3 mirror toggles of hat's raw data
+
+  // Absurd values (issue #17, D9): what the recording format cannot hold is
+  // refused here, naming the file and the stroke, not later by the writer.
+  write(R"([{"id":7,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,2e20]]],"creation_time":20,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"),
+                    Catch::Contains(hist) && Catch::Contains("id 7") && Catch::Contains("ctrl_pts[0][1]") &&
+                        Catch::Contains("absurd"));
+  write(R"([{"id":7,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":-5,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"), Catch::Contains(hist) && Catch::Contains("id 7") &&
+                                                         Catch::Contains("creation_time") &&
+                                                         Catch::Contains("outside [0, 1e9] s"));
+  write(R"([{"id":7,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":2e9,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"), Catch::Contains("id 7") && Catch::Contains("creation_time"));
+  write(R"([{"id":7,"input_samples":[[0,0,0],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":3e9}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"), Catch::Contains("id 7") && Catch::Contains("deletion_time"));
+  // A glitch sample (the reproducer's 1.8e20 m) is dropped with a warning.
+  write(R"([{"id":7,"input_samples":[[0,0,0],[0.5,0,1.8446744073709552e20],[1,0,0]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
+  std::vector<std::string> warnings;
+  const Recording glitch = import_cassie_session(dir, "s", &warnings);
+  REQUIRE(warnings.size() == 1);
+  CHECK_THAT(warnings[0], Catch::Contains(hist) && Catch::Contains("id 7") &&
+                              Catch::Contains("input_samples[1]") && Catch::Contains("dropped"));
+  for (const Event& e : glitch.events)
+    if (const auto* st = std::get_if<StrokeEvent>(&e.payload)) CHECK(st->stroke.samples.size() == 2);
+  std::ostringstream os;
+  CHECK_NOTHROW(write_recording(os, glitch));  // the writer accepts what the importer made
+  // ... unless too few samples are left.
+  write(R"([{"id":7,"input_samples":[[0,0,0],[0.5,0,1.8446744073709552e20]],"curve_type":"line","ctrl_pts":[[[0,0,0],[1,0,0]]],"creation_time":20,"deletion_time":null}])");
+  CHECK_THROWS_WITH(import_cassie_session(dir, "s"),
+                    Catch::Contains(hist) && Catch::Contains("stroke id 7") && Catch::Contains("at least 2"));
 }

@@ -29,8 +29,14 @@ struct BezierFitParams {
   // Both > 0 (pipeline: δ and δ/2).
   double corner_window = 0.02;
   double tangent_window = 0.01;
-  // Newton reparameterisation rounds per segment before splitting.
+  // Newton reparameterisation rounds per segment before splitting, tried
+  // when the error is under reparameterize_below × tolerance (Schneider: 4).
   int max_reparameterizations = 8;
+  double reparameterize_below = 4.0;
+  // Tolerance of the pieces of a split (> 0), or 0 for `tolerance`. The
+  // CASSIE app passes a fixed 0.01 to its recursive calls whatever the zoom
+  // (reference item 4: an original quirk).
+  double split_tolerance = 0.0;
 };
 
 // Indices of corners of the polyline (strictly inside, increasing): local
@@ -38,6 +44,21 @@ struct BezierFitParams {
 // the stroke on either side.
 std::vector<std::size_t> find_corners(const std::vector<Vec3>& points,
                                       const BezierFitParams& params);
+
+// Corners as the CASSIE app finds them on the raw samples (reference item 4,
+// `GetG1sections`): the largest turn (sample_turns) of each run of samples
+// turning by more than `angle`, kept when the sections on both sides (from
+// the previous corner, to the end) have at least `min_samples` samples and
+// are longer than `min_length`. Indices strictly inside, increasing.
+std::vector<std::size_t> find_corners_by_turns(const std::vector<Vec3>& points, double angle,
+                                               std::size_t min_samples, double min_length);
+
+// Fits each section on its own (chord-length Schneider fit, G1 inside) and
+// joins them; consecutive sections share their end point, and the joints
+// between sections are sharp. Same output and errors as fit_poly_bezier,
+// without corner detection (params.max_g1_angle, corner_window unused).
+Curve fit_poly_bezier_sections(const std::vector<std::vector<Vec3>>& sections,
+                               const BezierFitParams& params);
 
 // Fits a G1 poly-Bézier to points (n >= 2 distinct points; consecutive
 // duplicates are ignored). Every input point lies within `tolerance` of the

@@ -47,4 +47,23 @@ struct HookParams {
 // non-finite points or parameters out of range.
 IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams& params);
 
+// The CASSIE app's rule (reference item 3, `InputStroke.GetG1sections`):
+// from each end, scan the samples while the scanned polyline length is under
+// min(max_length, max_fraction of the stroke's length) and cut at the last
+// sample whose turn (sample_turns) exceeds min_angle, only if more than
+// min_remaining − 1 samples remain; there is no minimum hook length. The
+// end is scanned on what the start cut left.
+struct TurnHookParams {
+  double max_length = 0.06;        // 3δ (units of the points)
+  double max_fraction = 0.15;
+  double min_angle = std::numbers::pi / 6;
+  std::size_t min_remaining = 5;   // "more than 4 samples remain"
+};
+
+// Same contract as find_hookless_range (n >= 2, finite points); throws
+// std::invalid_argument for parameters out of range (max_length <= 0,
+// max_fraction outside [0, 0.5), min_angle outside (0, π)).
+IndexRange find_hookless_range_by_turns(const std::vector<Vec3>& points,
+                                        const TurnHookParams& params);
+
 }  // namespace sketchlab

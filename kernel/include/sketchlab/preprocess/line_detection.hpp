@@ -47,6 +47,18 @@ struct LineDetection {
 LineDetection detect_line(const std::vector<Vec3>& points, const std::vector<double>& times,
                           const LineDetectionParams& params);
 
+// The CASSIE app's line test (reference item 2, `Beautifier.Beautify`), on
+// the raw (filtered) samples: with L the polyline length and c the chord, a
+// line when L < min_length, or when (L − c)/c < max_excess and the mean
+// speed L / duration exceeds min_speed (skipped without times or with zero
+// duration). The app compares the excess ratio with δ(s) itself, so the
+// caller passes max_excess = δ/s (a number), min_length = δ/s and
+// min_speed = (δ/s)/0.05 s. Points and times as for detect_line; the
+// returned length is L (not the coarse polyline).
+LineDetection detect_line_by_excess(const std::vector<Vec3>& points,
+                                    const std::vector<double>& times, double max_excess,
+                                    double min_speed, double min_length);
+
 struct PcaLine {
   bool is_line = false;
   Vec3 a = Vec3::Zero();  // segment of the principal axis spanning the

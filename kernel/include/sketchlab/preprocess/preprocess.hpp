@@ -14,7 +14,24 @@
 
 namespace sketchlab {
 
+// Which reading of CASSIE's preprocessing to run.
+enum class PreprocessRules {
+  // Thesis §3.2.2 with sketchlab's choices where it gives no numbers: hooks
+  // as C1 discontinuities measured at two scales (hooks.hpp), lines by length
+  // ratio and speed (detect_line), corners on a δ window (fit_poly_bezier).
+  sketchlab,
+  // The CASSIE app (reference items 1–4, cassie-original-behaviour.md):
+  // input filtering (input_filter.hpp), the line test first on the raw
+  // samples (detect_line_by_excess), hooks and corners from sample turns
+  // (find_hookless_range_by_turns, find_corners_by_turns), each section
+  // simplified by RDP and fitted by Schneider's method with two-point
+  // tangents, 20 reparameterisations under 10× the tolerance and the fixed
+  // 0.01 split tolerance.
+  cassie_app,
+};
+
 struct PreprocessParams {
+  PreprocessRules rules = PreprocessRules::sketchlab;
   double delta = 0.02;             // m: CASSIE's small distance δ at zoom 1
   double fit_error_factor = 0.5;   // ×δ: Bézier fitting tolerance
   double max_g1_angle = std::numbers::pi / 4;  // rad: max turn inside a G1 section
@@ -29,24 +46,45 @@ struct PreprocessParams {
   double rdp_epsilon_factor = 0.1;      // ×δ: RDP tolerance (2 mm, as CASSIE's export)
   double corner_window_factor = 1.0;    // ×δ: scale at which corners are measured
   double tangent_window_factor = 0.5;   // ×δ: scale at which end tangents are measured
+  // cassie_app rules only (the app's values); fit_error_factor,
+  // max_g1_angle (corners), hook_max_length_factor, hook_max_fraction and
+  // rdp_epsilon_factor above apply to both.
+  bool app_filter_input = true;              // item 1 (off: the samples are already the app's)
+  double app_sample_step_factor = 0.1;       // ×δ: a sample when the hand moved more (item 1)
+  double app_min_length_factor = 0.5;        // ×δ: shorter strokes are dropped (item 1)
+  double app_min_duration = 0.2;             // s: briefer strokes with ends < 0.5δ apart are dropped
+  double app_end_trim = 0.02;                // s: samples this close to either end are removed
+  double app_line_time = 0.05;               // s: a line is faster than δ per this time (item 2)
+  double app_hook_angle = std::numbers::pi / 6;  // rad: turn that cuts a hook (item 3)
+  int app_corner_min_samples = 4;            // a corner bounds sections of at least this many samples
+  double app_corner_min_length_factor = 1.0;  // ×δ ... longer than this (item 4)
+  int app_reparameterizations = 20;          // Schneider rounds (item 4)
+  double app_reparameterize_below = 10.0;    // ... when the error is under this × the tolerance
+  double app_split_tolerance = 0.01;         // m, not scaled with zoom: the app's quirk (item 4)
 };
+
+// The CASSIE app's preprocessing (rules cassie_app) with its parameters.
+PreprocessParams cassie_app_preprocess();
 
 // Empty when every parameter is in range, else "name = value: allowed range".
 std::string validate(const PreprocessParams& params);
 
 struct Preprocessed {
-  std::vector<Vec3> points;  // input points within `kept` (hooks cut)
-  IndexRange kept;           // indices of the input kept
+  std::vector<Vec3> points;  // the points fitted: input within `kept` (hooks cut; cassie_app: filtered)
+  IndexRange kept;           // indices of the input of the first and last point kept
   bool is_line = false;
   Curve curve;  // make_line(first, last kept point) for lines, else the fit
 };
 
 // Runs the pipeline on points (metres in workspace space) with times
 // (seconds; same size, non-decreasing, or empty if unknown) drawn at zoom
-// workspace_scale > 0. The fitted curve (non-line case) lies within
-// (fit_error_factor + rdp_epsilon_factor)·δ/s of every kept point. Throws
-// std::invalid_argument naming the problem for fewer than 2 points,
-// zero-length strokes, non-finite input, mismatched times or invalid params.
+// workspace_scale > 0. The fitted curve (non-line case) passes within about
+// (fit_error_factor + rdp_epsilon_factor)·δ/s of every kept point and never
+// leaves their neighbourhood (tests/kernel/preprocess: two-sided distance
+// over every bundled stroke). Throws std::invalid_argument naming the
+// problem for fewer than 2 points, zero-length strokes, non-finite input,
+// mismatched times or invalid params, and (cassie_app) for a stroke the app
+// drops ("dropped as the CASSIE app does: ...").
 Preprocessed preprocess_stroke(const std::vector<Vec3>& points, const std::vector<double>& times,
                                const PreprocessParams& params, double workspace_scale);
 

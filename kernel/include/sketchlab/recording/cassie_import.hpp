@@ -25,7 +25,17 @@
 // Header: units "m", up +y (Unity), grid from infer_grid over the neatened
 // endpoints, mirror plane from infer_mirror_plane over the mirrored pairs,
 // mirroring and scale from the first systemState; source = {dataset, license,
-// session, system, model, interaction_mode, grid, mirror, sample_times}.
+// session, system, model, interaction_mode, grid, mirror, sample_times}, plus
+// import_warnings (the warnings below, "; "-joined) when there are any.
+//
+// Real data has quirks; these import with a warning naming the file and the
+// stroke id instead of refusing the session:
+// - an input sample with a coordinate beyond ±1e6 m (what recordings hold) is
+//   dropped;
+// - a deletion_time before the creation_time (`flower`) is replaced by the
+//   first delete-stroke action (interactionType 2) raw_data logs for the
+//   stroke or its mirrored twin after its creation; without one the stroke is
+//   never deleted.
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -37,16 +47,21 @@
 
 namespace sketchlab {
 
-// Imports one session from the two files. `session` names it in the header.
-// Throws std::runtime_error naming the file and the field for a missing file,
-// malformed JSON, a missing or mistyped field, or an invalid stroke or curve.
+// Imports one session from the two files. `session` names it in the header;
+// `warnings`, when given, receives the warnings above. Throws
+// std::runtime_error naming the file, the stroke id and the field for a
+// missing file, malformed JSON, a missing or mistyped field, a control point
+// beyond ±1e6 m, a time outside [0, 1e9] s, a canvasScale outside (0, 1e6],
+// or an invalid stroke (fewer than 2 samples left) or curve.
 Recording import_cassie(const std::filesystem::path& sketch_history_json,
-                        const std::filesystem::path& raw_data_json, const std::string& session);
+                        const std::filesystem::path& raw_data_json, const std::string& session,
+                        std::vector<std::string>* warnings = nullptr);
 
 // Imports <dataset_dir>/sketch_history/<session>.json with
 // <dataset_dir>/raw_data/<session>.json.
 Recording import_cassie_session(const std::filesystem::path& dataset_dir,
-                                const std::string& session);
+                                const std::string& session,
+                                std::vector<std::string>* warnings = nullptr);
 
 struct GridInference {
   bool found = false;

@@ -33,6 +33,9 @@ struct PrecisionRecall {
 //     (nodes + dangling ends), CASSIE CHI 2021 §6.4.2
 //   input_deviation_mean_m, input_deviation_max_m: distance of each live 3D
 //     stroke's samples to its curve
+//   input_hausdorff_mean_m, input_hausdorff_max_m: two-sided (Hausdorff)
+//     distance between each live 3D stroke's samples and its curve
+//     (geometry/hausdorff.hpp)
 //   enforced_<kind>_residual_mean: mean residual of enforced constraints
 //   ref_<track>_endpoint_mean_m, ref_<track>_control_mean_m,
 //   ref_<track>_snap_agreement, ref_<track>_compared: against a reference

@@ -12,6 +12,7 @@
 // with the reference curve of the same stroke. Errors therefore never
 // accumulate: every stroke starts from the reference history.
 // Undo/redo/patch events are not replayed (imported CASSIE sessions have none).
+// Reference curves go on their stroke's layer.
 #include <array>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct TeacherForcedOptions {
 struct TeacherForcedStroke {
   StrokeId stroke = 0;
   double time = 0.0;
+  bool corrected = false;  // the corrector was called (the stroke is valid)
   bool compared = false;   // both curves exist
   std::string error;       // corrector error or missing curve/reference
   bool reference_line = false, output_line = false;
@@ -44,8 +46,13 @@ struct TeacherForcedStroke {
   std::array<std::string, 2> reference_snap, output_snap;
   int constraints_considered = 0, constraints_enforced = 0;
   CorrectionStats stats;
-  double latency_ms = 0.0;
+  double latency_ms = 0.0;  // wall time of Corrector::correct
+  double cpu_ms = 0.0;      // CPU time of the calling thread in it (thread_cpu_ms)
 };
+
+// CPU time consumed by the calling thread (ms, CLOCK_THREAD_CPUTIME_ID): on a
+// shared machine wall time also measures other processes.
+double thread_cpu_ms();
 
 // Throws std::invalid_argument for resample < 2 or a negative tolerance.
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corrector& corrector,
@@ -53,14 +60,26 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corr
 
 struct TeacherForcedSummary {
   std::size_t strokes = 0, compared = 0, errors = 0;
-  Distribution endpoint_distance, mean_deviation, max_deviation, latency_ms;
+  Distribution endpoint_distance, mean_deviation, max_deviation;
+  Distribution latency_ms, cpu_ms;   // over every corrected stroke (wall, thread CPU)
   std::size_t endpoints = 0;         // 2 per compared stroke
   std::size_t snap_agreements = 0;   // snapped in both or in neither
+  std::size_t snap_kind_agreements = 0;  // same snap kind ("" = free counts as a kind)
   std::size_t reference_snaps = 0, output_snaps = 0, both_snaps = 0;
   std::size_t line_agreements = 0;   // same kind (line / poly-Bézier)
-  double snap_agreement() const { return endpoints ? double(snap_agreements) / endpoints : 0.0; }
+  static double ratio(std::size_t a, std::size_t b) { return b ? double(a) / double(b) : 0.0; }
+  double snap_agreement() const { return ratio(snap_agreements, endpoints); }
+  double snap_kind_agreement() const { return ratio(snap_kind_agreements, endpoints); }
+  double snap_recall() const { return ratio(both_snaps, reference_snaps); }
+  double snap_precision() const { return ratio(both_snaps, output_snaps); }
+  double line_agreement() const { return ratio(line_agreements, compared); }
 };
 TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes);
+
+// The fidelity-suite group of a recording (header.source of the CASSIE
+// importer): "showcase" for free-creation sessions, else the CASSIE system
+// capitalised ("Freehand", "Armature", "Patch"); "other" without a system.
+std::string fidelity_group(const RecordingHeader& header);
 
 // One CSV row per stroke, with a header line.
 std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes);

@@ -1,3 +1,4 @@
+// Lines (CASSIE app item 17; thesis Appendix A): exact synthetic cases.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -10,53 +11,107 @@ using namespace sketchlab;
 using namespace sketchlab::cassie;
 
 namespace {
-Candidate at(double t, const Vec3& p) {
+
+Candidate at(const Vec3& p, TargetKind kind = TargetKind::curve) {
   Candidate c;
-  c.kind = TargetKind::curve;
-  c.t_stroke = t;
+  c.kind = kind;
   c.target = p;
   return c;
 }
+
+constexpr double snap = 0.04, keep = 0.004, theta = 0.5235987755982988;  // 2δ, 0.2δ, π/6
+
+double off_line(const LineResult& r, const Vec3& p) { return closest_point(make_line(r.a, r.b), p).distance; }
+
 }  // namespace
 
-TEST_CASE("Appendix A: ends near constraints snap to them", "[cassie][line]") {
-  const Vec3 a(0, 0, 0), b(1, 0.3, 0);
-  const std::vector<Candidate> cs{at(0.01, {0.01, 0.02, 0}), at(0.5, {0.5, 0.2, 0}),
-                                  at(0.99, {1.0, 0.31, 0.01})};
-  const LineResult r = beautify_line(a, b, cs, 0.04, 0.5, false);
-  CHECK(r.enforced == std::vector<int>{0, 2});  // the two nearest the ends, not the middle
-  CHECK((r.a - cs[0].target).norm() == 0.0);
-  CHECK((r.b - cs[2].target).norm() == 0.0);
-}
-
-TEST_CASE("Appendix A: two interior constraints project the ends", "[cassie][line]") {
-  const Vec3 a(0, 0, 0), b(1, 0, 0);
-  const std::vector<Candidate> cs{at(0.3, {0.3, 0.02, 0}), at(0.7, {0.7, 0.03, 0})};
-  const LineResult r = beautify_line(a, b, cs, 0.04, 0.5, false);
-  const Curve l = make_line(r.a, r.b);
-  for (const Candidate& c : cs) CHECK(closest_point(l, c.target).distance < 1e-12);
-}
-
-TEST_CASE("Appendix A: one interior constraint translates, free lines align to an axis",
+TEST_CASE("Lines: with more than two constraints, the first detected and the farthest from it",
           "[cassie][line]") {
-  const Vec3 a(0, 0, 0), b(1, 0.1, 0);
-  const std::vector<Candidate> one{at(0.5, {0.5, 0.08, 0.01})};
-  const LineResult r = beautify_line(a, b, one, 0.04, 0.5236, true);
-  CHECK(closest_point(make_line(r.a, r.b), one[0].target).distance < 1e-12);
-  CHECK(r.axis == 0);
-  CHECK(std::abs((r.b - r.a).normalized().x()) == Approx(1.0));
-  const LineResult free = beautify_line(a, b, {}, 0.04, 0.5236, true);
-  CHECK(free.axis == 0);
-  CHECK((free.b - free.a).norm() == Approx((b - a).norm()));
-  CHECK(((free.a + free.b) / 2 - (a + b) / 2).norm() < 1e-12);
+  const Vec3 a(0, 0, 0), b(1, 0.3, 0);
+  // Detection order: the middle one first, then one near b, then one near a.
+  const std::vector<Candidate> cs{at({0.5, 0.16, 0}), at({0.98, 0.3, 0.01}), at({0.01, 0.02, 0})};
+  const LineResult r = beautify_line(a, b, cs, snap, keep, theta, false);
+  // Farthest from the first (0.5, 0.16): (0.98, 0.3) is 0.50 away, (0.01, 0.02) 0.51.
+  CHECK(r.used == std::vector<int>{0, 2});
+  // (0.01, 0.02) snaps end a (within 2δ); the middle one is beyond neither end
+  // and 0.3 m from b: b is projected onto the line from the new a through it.
+  CHECK(r.a == cs[2].target);
+  CHECK(off_line(r, cs[0].target) < 1e-12);
+  CHECK(r.enforced == std::vector<int>{0, 2});
+}
+
+TEST_CASE("Lines: an end snaps to its constraint within 2δ or beyond the end", "[cassie][line]") {
+  const Vec3 a(0, 0, 0), b(1, 0, 0);
+  // 3 cm before a (beyond it) and 3.9 cm from b: both snap.
+  const std::vector<Candidate> cs{at({-0.03, 0.001, 0}), at({0.97, 0.025, 0})};
+  const LineResult r = beautify_line(a, b, cs, snap, keep, theta, false);
+  CHECK(r.a == cs[0].target);
+  CHECK(r.b == cs[1].target);
+  CHECK(r.enforced.size() == 2);
+}
+
+TEST_CASE("Lines: interior constraints project a onto the line to b, then b", "[cassie][line]") {
+  const Vec3 a(0, 0, 0), b(1, 0, 0);
+  const Vec3 p(0.3, 0.02, 0), q(0.7, 0.03, 0.01);
+  const LineResult r = beautify_line(a, b, {at(p), at(q)}, snap, keep, theta, false);
+  // a on the line p–b (b as drawn), then b on the line from the new a through q.
+  const Vec3 u = (b - p).normalized();
+  CHECK((r.a - (p + (a - p).dot(u) * u)).norm() < 1e-12);
+  const Vec3 w = (q - r.a).normalized();
+  CHECK((r.b - (r.a + (b - r.a).dot(w) * w)).norm() < 1e-12);
+  CHECK(off_line(r, q) < 1e-12);
+  // p is off the final line by more than 0.2δ: no node there.
+  CHECK(off_line(r, p) > keep);
+  CHECK(r.enforced == std::vector<int>{1});
+}
+
+TEST_CASE("Lines: of two constraints closer than 0.2δ one is kept, an intersection first",
+          "[cassie][line]") {
+  const Vec3 a(0, 0, 0), b(1, 0, 0);
+  const std::vector<Candidate> cs{at({0.999, 0.01, 0}, TargetKind::grid), at({1.001, 0.012, 0})};
+  const LineResult r = beautify_line(a, b, cs, snap, keep, theta, false);
+  CHECK(r.used == std::vector<int>{1});
+  CHECK(r.b == cs[1].target);
+}
+
+TEST_CASE("Lines: axis snap about the start, or the snapped end, within 2δ", "[cassie][line]") {
+  SECTION("no constraint: rotated about a") {
+    const Vec3 a(0.1, 0.2, 0.3), b(0.1 + 0.3, 0.2 + 0.02, 0.3);  // 3.8° off x, b moves 2 cm
+    const LineResult r = beautify_line(a, b, {}, snap, keep, theta, true);
+    CHECK(r.axis == 0);
+    CHECK(r.a == a);
+    CHECK((r.b - (a + (b - a).norm() * Vec3::UnitX())).norm() < 1e-12);  // length kept
+  }
+  SECTION("no constraint: the far end would move more than 2δ") {
+    const Vec3 a(0, 0, 0), b(1.0, 0.2, 0);  // 11° off x on a 1 m line: b moves 19 cm
+    const LineResult r = beautify_line(a, b, {}, snap, keep, theta, true);
+    CHECK(r.axis == -1);
+    CHECK(r.b == b);
+  }
+  SECTION("one constraint: about the snapped end") {
+    const Vec3 a(0, 0, 0), b(0.02, 0.3, 0);  // along y
+    const Vec3 p(0.005, 0.31, 0.01);           // near b
+    const LineResult r = beautify_line(a, b, {at(p)}, snap, keep, theta, true);
+    CHECK(r.axis == 1);
+    CHECK(r.b == p);
+    CHECK(std::abs((r.b - r.a).normalized().y()) == Approx(1.0));
+    CHECK(r.enforced == std::vector<int>{0});
+  }
+  SECTION("two constraints: no axis snap") {
+    const Vec3 a(0, 0, 0), b(0.3, 0.01, 0);
+    const LineResult r =
+        beautify_line(a, b, {at({0.001, 0.002, 0}), at({0.3, 0.015, 0})}, snap, keep, theta, true);
+    CHECK(r.axis == -1);
+  }
 }
 
 TEST_CASE("A straight stroke ending near a curve becomes a line touching it", "[cassie][line]") {
   Sketch sketch;
   sketchlab::test::add_curve(sketch, make_line({0.3, -0.2, 0.1}, {0.3, 0.2, 0.1}));
-  // Fast straight stroke, diagonal (no axis within θ), ending 1.5 cm short.
+  // Fast (0.52 m/s) straight stroke, diagonal (no axis within θ), ending 1 cm
+  // short: the last brush step (item 6: none at the end) touches the curve.
   const Stroke s = sketchlab::test::make_stroke(
-      1, 30, [](double u) { return Vec3(-0.1 + 0.385 * u, -0.1 + 0.3 * u, 0.35 - 0.25 * u); }, 0.2);
+      1, 30, [](double u) { return Vec3(-0.1 + 0.39 * u, -0.1 + 0.3 * u, 0.35 - 0.25 * u); }, 1.0);
   const Correction c = correct_stroke(s, sketch, CassieParams{});
   REQUIRE(c.error.empty());
   const Curve& out = c.edit.curves_added[0].curve;

@@ -41,4 +41,13 @@ inline bool all_finite(const Curve& c) {
   return true;
 }
 
+// A straight poly-Bézier of k segments from a to b (smooth joints).
+inline Curve straight(const Vec3& a, const Vec3& b, int k) {
+  Curve c;
+  c.kind = CurveKind::bezier;
+  for (int i = 0; i <= 3 * k; ++i) c.control_points.push_back(a + (b - a) * (i / (3.0 * k)));
+  c.sharp.assign(k + 1, false);
+  return c;
+}
+
 }  // namespace sketchlab::test

@@ -1,9 +1,13 @@
+// Fidelity to the original CASSIE on the bundled sessions (issue #15): the
+// teacher-forced figures per CASSIE system, asserted at what the corrector
+// reaches today (README "Fidelity"), with a small margin, so a regression
+// fails.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 #include "sketchlab/plugin/plugin_host.hpp"
-#include "sketchlab/recording/cassie_import.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/run/teacher_forced.hpp"
 #include "test_paths.hpp"
@@ -12,10 +16,12 @@ using namespace sketchlab;
 
 namespace {
 
-Recording load(const std::string& name) {
-  const auto path = test::source_path("data/recordings/" + name + ".jsonl");
-  if (std::filesystem::exists(path)) return read_recording(path);
-  return import_cassie_session(test::source_path("data/cassie"), name);
+void print(const std::string& name, const TeacherForcedSummary& s) {
+  std::cout << name << ": " << s.compared << "/" << s.strokes << " strokes, snap agreement "
+            << 100 * s.snap_agreement() << " %, same kind " << 100 * s.snap_kind_agreement()
+            << " %, recall " << 100 * s.snap_recall() << " %, precision " << 100 * s.snap_precision()
+            << " %, endpoint median " << 1000 * s.endpoint_distance.median << " mm, mean deviation median "
+            << 1000 * s.mean_deviation.median << " mm, line agreement " << 100 * s.line_agreement() << " %\n";
 }
 
 }  // namespace
@@ -29,33 +35,40 @@ TEST_CASE("Distribution uses nearest-rank percentiles", "[cassie][teacher]") {
   CHECK(distribution({}).count == 0);
 }
 
-TEST_CASE("Teacher-forced comparison with CASSIE on the four sessions", "[cassie][teacher][slow]") {
+TEST_CASE("Teacher-forced fidelity to CASSIE on the 14 structured sessions", "[cassie][teacher][slow]") {
   PluginHost host;
   host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
   auto corrector = host.make_corrector("cassie", {{"mirror", std::string("plane")}});
-  std::vector<TeacherForcedStroke> all;
-  for (const std::string name : {"hat", "chair", "01-2-1", "02-1-2"}) {
-    const auto strokes = teacher_forced(load(name), *corrector);
-    const auto s = summarize(strokes);
-    std::cout << name << ": compared " << s.compared << "/" << s.strokes << ", endpoint median "
-              << s.endpoint_distance.median * 1000 << " mm p90 " << s.endpoint_distance.p90 * 1000
-              << " mm, mean deviation median " << s.mean_deviation.median * 1000
-              << " mm, snap agreement " << 100 * s.snap_agreement() << " %\n";
+  std::map<std::string, std::vector<TeacherForcedStroke>> groups;
+  for (const auto& e : std::filesystem::directory_iterator(test::source_path("data/recordings"))) {
+    const Recording rec = read_recording(e.path());
+    const std::string group = fidelity_group(rec.header);
+    if (group == "Freehand") continue;  // no structuring in CASSIE: see the freehand plugin's test
+    const auto strokes = teacher_forced(rec, *corrector);
+    const TeacherForcedSummary s = summarize(strokes);
+    INFO(e.path().filename().string());
     CHECK(s.errors == 0);
-    CHECK(s.snap_agreement() > 0.70);  // measured 74–96 % per session
-    all.insert(all.end(), strokes.begin(), strokes.end());
+    CHECK(s.compared == s.strokes);
+    CHECK(s.snap_agreement() > 0.75);
+    auto& g = groups[group == "showcase" ? group : "Armature+Patch"];
+    g.insert(g.end(), strokes.begin(), strokes.end());
   }
-  const auto s = summarize(all);
-  std::cout << "all: endpoint median " << s.endpoint_distance.median * 1000 << " mm, p90 "
-            << s.endpoint_distance.p90 * 1000 << " mm; mean deviation median "
-            << s.mean_deviation.median * 1000 << " mm, p90 " << s.mean_deviation.p90 * 1000
-            << " mm; snap agreement " << 100 * s.snap_agreement() << " % (reference snaps "
-            << s.reference_snaps << ", ours " << s.output_snaps << ", both " << s.both_snaps
-            << " of " << s.endpoints << ")\n";
-  CHECK(s.compared == 636);
-  // Measured (README): endpoint median 3.1 mm, mean deviation median 3.9 mm,
-  // snap agreement 87.0 %. Thresholds a little looser than that.
-  CHECK(s.endpoint_distance.median < 0.004);
-  CHECK(s.mean_deviation.median < 0.0045);
-  CHECK(s.snap_agreement() > 0.85);
+  const TeacherForcedSummary study = summarize(groups["Armature+Patch"]);
+  const TeacherForcedSummary showcase = summarize(groups["showcase"]);
+  print("Armature+Patch", study);
+  print("showcase", showcase);
+  CHECK(study.compared == 600);
+  CHECK(showcase.compared == 1944);
+  // Measured (README): Armature+Patch 85.9 % / 82.1 % / 6.19 mm / 6.69 mm /
+  // 99.7 %; showcase 92.3 % / 89.0 % / 3.50 mm / 4.64 mm / 93.3 %.
+  CHECK(study.snap_agreement() > 0.850);
+  CHECK(study.snap_kind_agreement() > 0.810);
+  CHECK(study.endpoint_distance.median < 0.0065);
+  CHECK(study.mean_deviation.median < 0.0070);
+  CHECK(study.line_agreement() > 0.99);
+  CHECK(showcase.snap_agreement() > 0.915);
+  CHECK(showcase.snap_kind_agreement() > 0.880);
+  CHECK(showcase.endpoint_distance.median < 0.0038);
+  CHECK(showcase.mean_deviation.median < 0.0049);
+  CHECK(showcase.line_agreement() > 0.925);
 }

@@ -74,7 +74,7 @@ TEST_CASE("with noise 0 the freehand fits are within 1 mm of the ground truth", 
     // δ = 1 mm: the fit tolerance is 0.6δ, so a 1 mm bound measures the
     // strokes, not the fit (at CASSIE's δ = 2 cm the tolerance is 1.2 cm, and
     // hook removal takes rounded corners within 3δ of a stroke end).
-    Replayed r = replay(host, {{"model", model}, {"noise", 0.0}}, {{"delta", 0.001}});
+    Replayed r = replay(host, {{"model", model}, {"noise", 0.0}}, {{"delta", 0.001}, {"rules", std::string("sketchlab")}});
     const Sketch& sketch = r.session.sketch();
     const auto& truth = r.session.references().at("ground_truth");
     double worst = 0.0;

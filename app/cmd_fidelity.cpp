@@ -1,0 +1,176 @@
+// `sketchlab fidelity DIR_OR_RECORDING... --corrector NAME [--param k=v ...]
+// [--track cassie] [--csv-dir DIR]`: the teacher-forced comparison
+// (kernel run/teacher_forced.hpp) over many sessions at once, summarised per
+// CASSIE system (Freehand / Armature / Patch / showcase), for the study
+// sessions together and for all.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "commands.hpp"
+#include "plugin_arguments.hpp"
+#include "sketchlab/io/text_file.hpp"
+#include "sketchlab/plugin/plugin_host.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
+#include "sketchlab/run/teacher_forced.hpp"
+
+namespace sketchlab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FidelityOptions {
+  std::vector<std::string> inputs;
+  std::string corrector;
+  std::vector<std::string> params;
+  std::string track = "cassie";
+  std::string csv_dir;
+  double snap_tolerance = 1e-4;
+};
+
+// Directories expand to their *.jsonl files (sorted); files are kept as given.
+std::vector<fs::path> expand(const std::vector<std::string>& inputs) {
+  std::vector<fs::path> out;
+  for (const std::string& in : inputs) {
+    const fs::path p(in);
+    if (fs::is_directory(p)) {
+      std::vector<fs::path> found;
+      for (const auto& e : fs::directory_iterator(p))
+        if (e.is_regular_file() && e.path().extension() == ".jsonl") found.push_back(e.path());
+      if (found.empty()) throw std::runtime_error(in + ": directory holds no .jsonl recording");
+      std::sort(found.begin(), found.end());
+      out.insert(out.end(), found.begin(), found.end());
+    } else if (fs::is_regular_file(p)) {
+      out.push_back(p);
+    } else {
+      throw std::runtime_error(in + ": no such recording or directory");
+    }
+  }
+  return out;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// The columns of the table (issue #15), one row per group or session.
+const char* const header_row =
+    "group,sessions,strokes,compared,errors,snap_agreement_pct,snap_kind_agreement_pct,"
+    "snap_recall_pct,snap_precision_pct,endpoint_median_mm,endpoint_p90_mm,mean_deviation_median_mm,"
+    "mean_deviation_p90_mm,line_agreement_pct,cpu_p50_ms,cpu_p95_ms,cpu_max_ms,wall_p50_ms,wall_p95_ms,"
+    "wall_max_ms";
+
+std::string row(const std::string& name, std::size_t sessions, const TeacherForcedSummary& s) {
+  std::ostringstream o;
+  o << name << ',' << sessions << ',' << s.strokes << ',' << s.compared << ',' << s.errors << ','
+    << fixed(100 * s.snap_agreement(), 1) << ',' << fixed(100 * s.snap_kind_agreement(), 1) << ','
+    << fixed(100 * s.snap_recall(), 1) << ',' << fixed(100 * s.snap_precision(), 1) << ','
+    << fixed(1000 * s.endpoint_distance.median, 2) << ',' << fixed(1000 * s.endpoint_distance.p90, 2)
+    << ',' << fixed(1000 * s.mean_deviation.median, 2) << ',' << fixed(1000 * s.mean_deviation.p90, 2)
+    << ',' << fixed(100 * s.line_agreement(), 1) << ',' << fixed(s.cpu_ms.median, 3) << ','
+    << fixed(s.cpu_ms.p95, 3) << ',' << fixed(s.cpu_ms.max, 3) << ',' << fixed(s.latency_ms.median, 3)
+    << ',' << fixed(s.latency_ms.p95, 3) << ',' << fixed(s.latency_ms.max, 3);
+  return o.str();
+}
+
+// The CSV rows as an aligned text table.
+std::string aligned(const std::vector<std::string>& rows) {
+  std::vector<std::vector<std::string>> cells;
+  std::vector<std::size_t> width;
+  for (const std::string& r : rows) {
+    std::vector<std::string> c;
+    std::stringstream ss(r);
+    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (width.size() <= i) width.push_back(0);
+      width[i] = std::max(width[i], c[i].size());
+    }
+    cells.push_back(std::move(c));
+  }
+  std::ostringstream o;
+  for (const auto& c : cells) {
+    for (std::size_t i = 0; i < c.size(); ++i)
+      o << (i ? "  " : "") << std::string(i ? width[i] - c[i].size() : 0, ' ') << c[i]
+        << std::string(i ? 0 : width[i] - c[i].size(), ' ');
+    o << '\n';
+  }
+  return o.str();
+}
+
+}  // namespace
+
+void add_fidelity_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "fidelity",
+      "Teacher-forced comparison with a reference track over many sessions: snap agreement, snap "
+      "kind, recall/precision, endpoint distance, deviation, line/Bézier agreement and latency per "
+      "CASSIE system (Freehand / Armature / Patch / showcase)");
+  auto o = std::make_shared<FidelityOptions>();
+  cmd->add_option("recordings", o->inputs, "Recordings (.jsonl) or directories of them")->required();
+  cmd->add_option("--corrector", o->corrector, "Corrector plugin name")->required();
+  cmd->add_option("--param", o->params, "Corrector parameter key=value (repeatable)");
+  cmd->add_option("--track", o->track, "Reference track (default cassie)");
+  cmd->add_option("--csv-dir", o->csv_dir,
+                  "Write <session>.csv (one row per stroke) and summary.csv (one row per session "
+                  "and per group) into this directory");
+  cmd->add_option("--snap-tolerance", o->snap_tolerance,
+                  "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
+  cmd->callback([o, &exit_code] {
+    const std::vector<fs::path> files = expand(o->inputs);
+    PluginHost host;
+    load_plugins(host);
+    std::map<std::string, ParamValue> params;
+    if (const LoadedPlugin* plugin = host.find(PluginKind::corrector, o->corrector))
+      params = parse_param_arguments(*plugin, o->params);
+    const auto corrector = host.make_corrector(o->corrector, params);
+    TeacherForcedOptions opt;
+    opt.track = o->track;
+    opt.snap_tolerance = o->snap_tolerance;
+    if (!o->csv_dir.empty()) fs::create_directories(o->csv_dir);
+
+    std::map<std::string, std::vector<TeacherForcedStroke>> groups;
+    std::map<std::string, std::size_t> group_sessions;
+    std::vector<TeacherForcedStroke> study, all;
+    std::vector<std::string> session_rows{std::string(header_row)};
+    for (const fs::path& f : files) {
+      const Recording rec = read_recording(f);
+      const auto strokes = teacher_forced(rec, *corrector, opt);
+      const std::string group = fidelity_group(rec.header);
+      const std::string session = f.stem().string();
+      if (!o->csv_dir.empty()) write_text_file(fs::path(o->csv_dir) / (session + ".csv"), teacher_forced_csv(strokes));
+      session_rows.push_back(row(session + " (" + group + ")", 1, summarize(strokes)));
+      std::cerr << session << ": " << strokes.size() << " strokes\n";
+      auto& g = groups[group];
+      g.insert(g.end(), strokes.begin(), strokes.end());
+      ++group_sessions[group];
+      if (group == "Armature" || group == "Patch") study.insert(study.end(), strokes.begin(), strokes.end());
+      all.insert(all.end(), strokes.begin(), strokes.end());
+    }
+    std::vector<std::string> rows{std::string(header_row)};
+    for (const char* name : {"Freehand", "Armature", "Patch", "showcase"})
+      if (groups.count(name)) rows.push_back(row(name, group_sessions[name], summarize(groups[name])));
+    for (const auto& [name, strokes] : groups)
+      if (name != "Freehand" && name != "Armature" && name != "Patch" && name != "showcase")
+        rows.push_back(row(name, group_sessions[name], summarize(strokes)));
+    if (!study.empty())
+      rows.push_back(row("Armature+Patch", group_sessions["Armature"] + group_sessions["Patch"], summarize(study)));
+    rows.push_back(row("all", files.size(), summarize(all)));
+    std::cout << "corrector " << o->corrector;
+    for (const std::string& p : o->params) std::cout << " " << p;
+    std::cout << "\n" << aligned(rows);
+    if (!o->csv_dir.empty()) {
+      std::string csv;
+      for (const auto* list : {&session_rows, &rows})
+        for (std::size_t i = list == &rows ? 1 : 0; i < list->size(); ++i) csv += (*list)[i] + "\n";
+      write_text_file(fs::path(o->csv_dir) / "summary.csv", csv);
+    }
+    exit_code = 0;
+  });
+}
+
+}  // namespace sketchlab::cli
