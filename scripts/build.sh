@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Configures and builds sketchlab in build/ (Release) or, with --sanitize, in
 # build-asan/ (ASan + UBSan: the kernel, every plugin, the CLI and the whole
-# test suite; no benchmarks, and no viewers, whose VTK/OpenGL stack is not
-# built with the sanitizers and whose tests need a display).
+# test suite, or only the targets named after --sanitize; no benchmarks, and
+# no viewers, whose VTK/OpenGL stack is not built with the sanitizers and
+# whose tests need a display).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dir="$root/build"
@@ -22,4 +23,5 @@ command -v ninja >/dev/null && generator=(-G Ninja)
 if [ ! -f "$dir/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$dir" "${generator[@]}" "${args[@]}" >/dev/null
 fi
+[ $# -gt 0 ] && targets=("$@")
 cmake --build "$dir" -j "$(nproc)" --target "${targets[@]}"
