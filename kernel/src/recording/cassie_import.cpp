@@ -423,8 +423,16 @@ Recording import_cassie(const std::filesystem::path& sketch_history_json,
                        "state before creation (else 1 s before) to creation_time"},
   };
   if (!warnings.empty()) {
+    // The header names the files without their directory, so a recording
+    // imported from any checkout is the same bytes.
+    const auto bare = [&](std::string w) {
+      for (const auto& f : {sketch_history_json, raw_data_json})
+        if (const std::string full = f.string(); w.rfind(full, 0) == 0)
+          w = f.filename().string() + w.substr(full.size());
+      return w;
+    };
     std::string all;
-    for (const std::string& w : warnings) all += (all.empty() ? "" : "; ") + w;
+    for (const std::string& w : warnings) all += (all.empty() ? "" : "; ") + bare(w);
     h.source["import_warnings"] = all;
   }
 

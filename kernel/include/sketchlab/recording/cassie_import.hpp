@@ -26,7 +26,8 @@
 // endpoints, mirror plane from infer_mirror_plane over the mirrored pairs,
 // mirroring and scale from the first systemState; source = {dataset, license,
 // session, system, model, interaction_mode, grid, mirror, sample_times}, plus
-// import_warnings (the warnings below, "; "-joined) when there are any.
+// import_warnings (the warnings below, "; "-joined, files named without their
+// directory) when there are any.
 //
 // Real data has quirks; these import with a warning naming the file and the
 // stroke id instead of refusing the session:
