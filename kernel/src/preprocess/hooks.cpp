@@ -78,20 +78,21 @@ std::size_t start_hook(const std::vector<Vec3>& p, const HookParams& hp) {
   return best;
 }
 
+// Throws std::invalid_argument naming `fn` unless `points` holds at least 2
+// finite points.
+void require_finite_points(const std::vector<Vec3>& points, const char* fn) {
+  if (points.size() < 2)
+    throw std::invalid_argument(std::string(fn) + ": need at least 2 points, got " + std::to_string(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!points[i].allFinite())
+      throw std::invalid_argument(std::string(fn) + ": point " + std::to_string(i) + " is not finite");
+}
+
 }  // namespace
 
 IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams& params) {
+  require_finite_points(points, "find_hookless_range");
   const std::size_t n = points.size();
-  if (n < 2) {
-    throw std::invalid_argument("find_hookless_range: need at least 2 points, got " +
-                                std::to_string(n));
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!points[i].allFinite()) {
-      throw std::invalid_argument("find_hookless_range: point " + std::to_string(i) +
-                                  " is not finite");
-    }
-  }
   if (!(params.max_length > 0.0) || !std::isfinite(params.max_length) ||
       !(params.min_length >= 0.0) || !(params.min_length <= params.max_length) ||
       !(params.max_fraction >= 0.0 && params.max_fraction < 0.5) ||
@@ -108,17 +109,8 @@ IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams
 }
 
 IndexRange find_hookless_range_by_turns(const std::vector<Vec3>& points, const TurnHookParams& params) {
+  require_finite_points(points, "find_hookless_range_by_turns");
   const std::size_t n = points.size();
-  if (n < 2) {
-    throw std::invalid_argument("find_hookless_range_by_turns: need at least 2 points, got " +
-                                std::to_string(n));
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!points[i].allFinite()) {
-      throw std::invalid_argument("find_hookless_range_by_turns: point " + std::to_string(i) +
-                                  " is not finite");
-    }
-  }
   if (!(params.max_length > 0.0) || !std::isfinite(params.max_length) ||
       !(params.max_fraction >= 0.0 && params.max_fraction < 0.5) ||
       !(params.min_angle > 0.0 && params.min_angle < std::numbers::pi)) {

@@ -59,17 +59,6 @@ struct Step {
   std::vector<std::size_t> index;  // into session.strokes (all created or deleted at `time`) or patches (one)
 };
 
-Stroke placeholder_stroke(StrokeId id) {
-  // The corrector ignores the samples; the session only checks them.
-  Stroke s;
-  s.id = id;
-  Sample a, b;
-  b.position = Vec3(0.01, 0.0, 0.0);
-  b.time = 0.1;
-  s.samples = {a, b};
-  return s;
-}
-
 StrokeSet strokes_of(const Curves& curves, const Patch& p) {
   StrokeSet out;
   for (const OrientedSegment& piece : p.boundary) out.insert(curves.cassie_of.at(piece.curve));
@@ -85,6 +74,16 @@ std::optional<Vec3> point_on(const Patch& p) {
 }
 
 }  // namespace
+
+Stroke placeholder_stroke(StrokeId id) {
+  Stroke s;
+  s.id = id;
+  Sample a, b;
+  b.position = Vec3(0.01, 0.0, 0.0);
+  b.time = 0.1;
+  s.samples = {a, b};
+  return s;
+}
 
 ReplayFigures& ReplayFigures::operator+=(const ReplayFigures& o) {
   cassie_created += o.cassie_created;

@@ -67,6 +67,11 @@ struct ReplayResult {
   std::vector<std::string> warnings;  // the session loader's and the replay's
 };
 
+// A two-sample stroke with id `id`: stands in for a stroke whose curve is
+// given (CASSIE's, or a test's), since the session checks samples and the
+// surfacer never reads them.
+Stroke placeholder_stroke(StrokeId id);
+
 // Replays `session` with a fresh surfacer of parameters `params`.
 ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmParams& params,
                                    const ReplayOptions& options = {});

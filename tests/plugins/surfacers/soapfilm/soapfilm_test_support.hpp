@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cassie_replay.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 #include "sketchlab/session.hpp"
@@ -76,16 +77,6 @@ inline std::shared_ptr<Surfacer> make_soapfilm(const std::map<std::string, Param
   return std::shared_ptr<Surfacer>(std::move(s));
 }
 
-inline Stroke dummy_stroke(StrokeId id) {
-  Stroke s;
-  s.id = id;
-  Sample a, b;
-  b.position = Vec3(0.01, 0.0, 0.0);
-  b.time = 0.1;
-  s.samples = {a, b};
-  return s;
-}
-
 // A session over prepared curves (stroke ids 1..n in order).
 struct PreparedSession {
   std::shared_ptr<Surfacer> surfacer;
@@ -95,7 +86,7 @@ struct PreparedSession {
                            std::shared_ptr<Surfacer> s = make_soapfilm())
       : surfacer(s), session(Workspace{}, make_corrector(curves), s) {}
   StepReport draw(StrokeId id) {
-    steps.push_back(session.handle(Event{0.0, StrokeEvent{dummy_stroke(id)}}));
+    steps.push_back(session.handle(Event{0.0, StrokeEvent{soapfilm::placeholder_stroke(id)}}));
     return steps.back();
   }
   StepReport handle(const EventPayload& payload) {
