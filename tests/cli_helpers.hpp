@@ -53,13 +53,11 @@ inline CliRun run_captured(const std::string& command) {
 // Runs `command` ("VAR=value ... program args", no other shell syntax) in the
 // background through env(1), exec'd so that the signal reaches the program
 // itself, with its output in `log`; waits until `log` contains
-// `ready` (at most `timeout_s`), lets it run `delay_s` more, sends `signal`
-// and waits for the end.
+// `ready` (at most `timeout_s`), sends `signal` and waits for the end.
 // status: the exit status, -1 when it did not exit normally (killed,
 // crashed) or never became ready (it is then killed).
 inline CliRun run_until_then_signal(const std::string& command, const std::filesystem::path& log,
-                                    const std::string& ready, int signal, double timeout_s = 60.0,
-                                    double delay_s = 0.0) {
+                                    const std::string& ready, int signal, double timeout_s = 60.0) {
   CliRun r;
   const pid_t pid = fork();
   REQUIRE(pid >= 0);
@@ -80,7 +78,6 @@ inline CliRun run_until_then_signal(const std::string& command, const std::files
     ended = !seen && waitpid(pid, &status, WNOHANG) == pid;  // ended before being ready
   }
   if (!ended) {
-    if (seen) usleep(static_cast<useconds_t>(delay_s * 1e6));
     kill(pid, seen ? signal : SIGKILL);
     waitpid(pid, &status, 0);
   }

@@ -100,15 +100,17 @@ TEST_CASE("SIGTERM stops record cleanly: the stroke being drawn is kept", "[open
     // About 100 s of drawing at 1000 polls per second: it must be stopped.
     std::ofstream s(script);
     s << "option monado_headless 1\nframe 3 right=0,1.2,-0.3\n";
+    // The signal goes when frame `mark` begins: five positions are drawn by
+    // then, whatever the machine's speed (a fixed delay was flaky).
     for (int i = 0; i < 2000; ++i)
       s << "frame 50 right=" << 0.2 * std::cos(0.01 * i) << ",1.2," << 0.2 * std::sin(0.01 * i)
-        << " right/input/trigger/value=0.5\n";
+        << " right/input/trigger/value=0.5" << (i == 5 ? " mark" : "") << "\n";
   }
   const auto out = dir / "rec.jsonl";
   const auto log = dir / "log.txt";
   const CliRun r = test::run_until_then_signal(
       env(script) + SKETCHLAB_CLI " record --input openxr --param headless_poll_hz=1000 -o " + out.string(), log,
-      "(Ctrl-C stops)", SIGTERM, 60.0);
+      "test runtime: mark", SIGTERM, 60.0);
   INFO(r.output);
   CHECK(r.status == 0);
   CHECK_THAT(r.output, Catch::Contains("stopping (signal 15)") && Catch::Contains("1 events"));
