@@ -11,10 +11,11 @@ targets=(all)
 if [ "${1:-}" = "--sanitize" ]; then
   shift
   dir="$root/build-asan"
-  # -O1 -g1 (line tables: file:line in the sanitizers' reports) compiles the
-  # instrumented code 2.6x faster than -O2 -g (json_codec.cpp: 47 s against
-  # 121 s of CPU), which keeps the whole suite's sanitizer build within CI.
-  args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
+  # -Og -g1 (line tables: file:line in the sanitizers' reports): GCC 12
+  # compiles the instrumented code 1.7x faster than at -O1 (sketch_json.cpp
+  # 25 s against 43 s of CPU, experiment_test.cpp 24 s against 44 s), and -O1
+  # 2.6x faster than -O2 -g; this keeps the whole suite's build within CI.
+  args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-Og -g1 -DNDEBUG"
         -DSKETCHLAB_SANITIZE=ON)
 fi
 generator=()
