@@ -211,7 +211,9 @@ bool CycleSearcher::winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) 
 
 std::vector<Cycle> CycleSearcher::search_segment(int segment) {
   std::vector<Cycle> out;
-  const GraphSegment& g = graph_->segment(segment);
+  // A copy: frame() below may split more curves into graph segments, which
+  // reallocates the graph's segment storage (ASan: heap-use-after-free).
+  const GraphSegment g = graph_->segment(segment);
   if (is_loop(g)) {
     if (auto c = walk({segment, true}, Vec3::UnitZ())) out.push_back(std::move(*c));
     return out;

@@ -263,7 +263,7 @@ void hostile_strokes_on_stacks_of(const std::string& corrector_name) {
     // The rest of the session is kept: the first curve is still there (unless
     // a stacked copy legitimately replaced it) and a new stroke is corrected.
     const StepReport last = handle(stroke_event(plain), "the plain stroke after");
-    INFO(label);
+    INFO(label << ": '" << last.error << "'");
     CHECK(last.error.empty());
     CHECK(session.sketch().network.curves().size() >= 1);
     }

@@ -100,8 +100,8 @@ TEST_CASE("Item 16: a short dangling piece beyond the last intersection is trimm
     CHECK(c.edit.nodes_added[0].incidences[0].t == Approx(out.t_max()));
     CassieParams keep;
     keep.trim_dangling = false;
-    const Curve& kept = correct_stroke(s, sketch, keep).edit.curves_added[0].curve;
-    CHECK(kept.control_points.back().x() > 0.23);
+    const Correction kept = correct_stroke(s, sketch, keep);  // kept alive: a reference into it is read below
+    CHECK(kept.edit.curves_added[0].curve.control_points.back().x() > 0.23);
   }
 }
 
