@@ -36,10 +36,14 @@ constexpr double grace_s = 8.0;
 // samples: every hostile kind still reaches every stack, and the run stays
 // bounded (issue 17: long property runs bounded in time). The 10^6-sample
 // stroke, refused before any plugin sees it, keeps its size.
+// Likewise the stacked copies: 10, not 50, so that the stroke after them
+// still fits JustDrawIt's 1 s budget on the grown network.
 #ifdef SKETCHLAB_SANITIZED
 constexpr int long_stroke_samples = 20'000;
+constexpr int stacked_copies = 10;
 #else
 constexpr int long_stroke_samples = 100'000;
+constexpr int stacked_copies = 50;
 #endif
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -255,7 +259,7 @@ void hostile_strokes_on_stacks_of(const std::string& corrector_name) {
       if (!c.may_be_corrected) CHECK_FALSE(r.error.empty());
       CHECK(finite_sketch(session.sketch(), steps));
     }
-    for (int k = 0; k < 50; ++k) handle(stroke_event(plain), "stacked copy " + std::to_string(k));
+    for (int k = 0; k < stacked_copies; ++k) handle(stroke_event(plain), "stacked copy " + std::to_string(k));
     handle(Event{0.0, AddPatchEvent{Vec3(0.1, 0.0, 0.4)}}, "add_patch");
     handle(Event{0.0, RecomputeSurfaceEvent{}}, "recompute_surface");
     CHECK(finite_sketch(session.sketch(), steps));
