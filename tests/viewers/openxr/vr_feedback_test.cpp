@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "cli_helpers.hpp"
+#include "constraint_markers.hpp"
 #include "hand_actors.hpp"
 #include "hand_menu.hpp"
 #include "sketchlab/config/config.hpp"
@@ -193,13 +194,11 @@ TEST_CASE("a stroke stays until corrected; the snapped curve glows in, its const
   RecordingInput input(rec);
   const ReplayResult replayed = replay(input, stack);
   const Sketch& sketch = replayed.session.sketch();
-  std::vector<Vec3> snaps;  // where the enforced point constraints of the second stroke act
+  std::vector<Vec3> snaps;  // where the enforced point constraints of the second stroke act (their markers)
   for (const Constraint& c : replayed.steps.at(1).constraints)
     if (c.enforced && (c.kind == ConstraintKind::coincident_point || c.kind == ConstraintKind::point_on_curve ||
                        c.kind == ConstraintKind::intersection))
-      for (const ConstraintRef& ref : c.references)
-        if (const NetworkCurve* curve = sketch.network.find_curve(ref.id); curve && ref.kind == ConstraintRef::Kind::curve)
-          snaps.push_back(evaluate(curve->curve, ref.parameter));
+      for (const Vec3& p : viewer::constraint_anchors(c, sketch)) snaps.push_back(p);
   REQUIRE_FALSE(snaps.empty());
   std::vector<Vec3> corrected;  // the second stroke's curves
   for (const auto& [id, c] : sketch.network.curves())

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli_helpers.hpp"
+#include "constraint_markers.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/io/sketch_json.hpp"
@@ -196,14 +197,9 @@ std::vector<Vec3> constraint_points(const Recording& rec, std::size_t events) {
   const ReplayResult result = replay(input, stack);
   std::vector<Vec3> out;
   for (const StepReport& step : result.steps)
-    for (const Constraint& c : step.constraints) {
-      if (!c.enforced) continue;
-      if (c.target.allFinite() && c.target != Vec3::Zero()) out.push_back(c.target);
-      for (const ConstraintRef& ref : c.references)
-        if (const NetworkCurve* curve = result.session.sketch().network.find_curve(ref.id);
-            curve && ref.kind == ConstraintRef::Kind::curve)
-          out.push_back(evaluate(curve->curve, ref.parameter));
-    }
+    for (const Constraint& c : step.constraints)
+      if (c.enforced)
+        for (const Vec3& p : viewer::constraint_anchors(c, result.session.sketch())) out.push_back(p);
   return out;
 }
 

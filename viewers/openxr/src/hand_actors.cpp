@@ -4,15 +4,13 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkCylinderSource.h>
+#include <vtkConeSource.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkSphereSource.h>
-#include <vtkTransform.h>
-#include <vtkTransformPolyDataFilter.h>
 
 #include "vr_actor_utils.hpp"
 
@@ -22,23 +20,19 @@ namespace {
 using openxr::MenuItem;
 
 constexpr double body_radius = 0.012, body_length = 0.10;  // m: a pen-sized controller
-constexpr viewer::Rgb off_hand_colour{0.75, 0.75, 0.78};
+constexpr viewer::Rgb pen_colour{0.55, 0.56, 0.60}, off_hand_colour{0.75, 0.75, 0.78};
 constexpr viewer::Rgb label_colour{0.08, 0.08, 0.10};
 
-// The controller body behind the aim point, along the hand's +z (towards
-// the user; the aim points along -z).
+// The controller: a pen-shaped cone whose point is the aim point, its body
+// along the hand's +z (towards the user; the aim points along -z).
 vtkSmartPointer<vtkActor> make_body() {
-  vtkNew<vtkCylinderSource> cylinder;
-  cylinder->SetRadius(body_radius);
-  cylinder->SetHeight(body_length);
-  cylinder->SetResolution(16);
-  vtkNew<vtkTransform> t;
-  t->Translate(0.0, 0.0, brush_tip_radius + 0.5 * body_length);
-  t->RotateX(90.0);  // the cylinder's axis is y
-  vtkNew<vtkTransformPolyDataFilter> place;
-  place->SetTransform(t);
-  place->SetInputConnection(cylinder->GetOutputPort());
-  return actor_for(place);
+  vtkNew<vtkConeSource> cone;
+  cone->SetRadius(body_radius);
+  cone->SetHeight(body_length);
+  cone->SetResolution(16);
+  cone->SetDirection(0.0, 0.0, -1.0);
+  cone->SetCenter(0.0, 0.0, 0.5 * body_length);
+  return actor_for(cone);
 }
 
 // The menu's squares in the holding hand's frame, one quad per item, a
@@ -230,7 +224,7 @@ void HandActors::update(const openxr::GestureInterpreter& input, const openxr::C
   }
   const auto& pen = frame.hands[d];
   const viewer::Rgb tip = tip_colour(input, style_);
-  set_colour(bodies_[d], mode_colour(input.mode(), input.correction_enabled()));
+  set_colour(bodies_[d], pen_colour);
   set_colour(bodies_[o], off_hand_colour);
   tip_->SetVisibility(pen.tracked);
   mode_label_->SetVisibility(pen.tracked);

@@ -1,5 +1,5 @@
 #pragma once
-// What the user holds (issue #25): a controller body per hand, the brush tip
+// What the user holds (issue #25): a pen-shaped controller per hand, the brush tip
 // at the dominant hand's aim point in the colour of the current mode or tool
 // (paler with correction off), a label on the dominant hand naming the mode
 // and whether correction is on, and on the other hand the hand menu
