@@ -188,11 +188,7 @@ TEST_CASE("a stroke stays until corrected; the snapped curve glows in, its const
   REQUIRE(rec.events.size() == 2);
 
   // What cassie did with the second stroke (replaying the recording).
-  PluginHost host;
-  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-  const StackInstance stack = instantiate_stack(load_stack(test::source_path("configs/stacks/cassie.yaml")), host);
-  RecordingInput input(rec);
-  const ReplayResult replayed = replay(input, stack);
+  const ReplayResult replayed = test::cassie_replay(rec, rec.events.size());
   const Sketch& sketch = replayed.session.sketch();
   std::vector<Vec3> snaps;  // where the enforced point constraints of the second stroke act (their markers)
   for (const Constraint& c : replayed.steps.at(1).constraints)

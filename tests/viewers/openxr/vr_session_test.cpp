@@ -176,25 +176,13 @@ FrameCheck check_frame(const fs::path& stem, const fs::path& reference_stem,
 
 // The stack's sketch after the first `events` events of `rec`.
 Sketch replay_prefix(const Recording& rec, std::size_t events) {
-  PluginHost host;
-  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-  const StackInstance stack = instantiate_stack(load_stack(test::source_path("configs/stacks/cassie.yaml")), host);
-  Recording prefix = rec;
-  prefix.events.resize(events);
-  RecordingInput input(prefix);
-  return replay(input, stack).session.sketch();
+  return test::cassie_replay(rec, events).session.sketch();
 }
 
-// Where the constraints enforced on the first `strokes` strokes act (their
+// Where the constraints enforced on the first `events` events act (their
 // markers may still be flashing).
 std::vector<Vec3> constraint_points(const Recording& rec, std::size_t events) {
-  PluginHost host;
-  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-  const StackInstance stack = instantiate_stack(load_stack(test::source_path("configs/stacks/cassie.yaml")), host);
-  Recording prefix = rec;
-  prefix.events.resize(events);
-  RecordingInput input(prefix);
-  const ReplayResult result = replay(input, stack);
+  const ReplayResult result = test::cassie_replay(rec, events);
   std::vector<Vec3> out;
   for (const StepReport& step : result.steps)
     for (const Constraint& c : step.constraints)

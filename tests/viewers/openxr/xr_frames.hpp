@@ -14,6 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "sketchlab/config/config.hpp"
+#include "sketchlab/plugin/recording_input.hpp"
+#include "sketchlab/run/stack.hpp"
 #include "sketchlab/types.hpp"
 #include "test_paths.hpp"
 
@@ -109,6 +112,18 @@ struct EyeImage {
     return d;
   }
 };
+
+// The first `events` events of `rec` replayed through the cassie stack
+// (what `sketchlab vr configs/stacks/cassie.yaml` computed live).
+inline ReplayResult cassie_replay(const Recording& rec, std::size_t events) {
+  PluginHost host;
+  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+  const StackInstance stack = instantiate_stack(load_stack(test::source_path("configs/stacks/cassie.yaml")), host);
+  Recording prefix = rec;
+  prefix.events.resize(std::min(events, prefix.events.size()));
+  RecordingInput input(prefix);
+  return replay(input, stack);
+}
 
 inline std::filesystem::path dump_stem(const std::filesystem::path& dir, int frame, int eye) {
   return dir / ("frame" + std::to_string(frame) + "_eye" + std::to_string(eye));
