@@ -142,6 +142,7 @@ int main(int argc, char** argv) {
     vr::CorrectionWorker worker(std::make_unique<LiveSession>(
         header, std::vector<StackInstance>{instantiate_stack(config, host)}, dir / "bench.jsonl", true));
     openxr::InputSettings settings;
+    settings.hand_menu = true;
     openxr::GestureInterpreter input(settings, header.workspace);
     vr::VrScene scene(eyes->renderer(), vr::vr_style(), {config.name});
     const Sketch big = large_sketch(curves, patches);

@@ -153,7 +153,8 @@ void GestureInterpreter::update_draw(const ControllerFrame& frame, std::vector<E
   if (!pressed) trigger_used_ = false;
   const HandFrame& holder = frame.hands[1 - static_cast<int>(settings_.dominant)];
   hover_.reset();
-  if (!drawing_ && hand.tracked && holder.tracked) hover_ = menu_item_at(holder.aim, hand.aim.position);
+  if (settings_.hand_menu && !drawing_ && hand.tracked && holder.tracked)
+    hover_ = menu_item_at(holder.aim, hand.aim.position);
   if (!drawing_ && rising && !dominant_grabbing && (hover_ || tool_ != Tool::draw)) {
     trigger_used_ = true;
     if (hover_)

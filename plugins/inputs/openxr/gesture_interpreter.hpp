@@ -59,8 +59,9 @@ class GestureInterpreter {
   // Samples of the stroke being drawn (workspace), empty when not drawing.
   const std::vector<Sample>& stroke_in_progress() const { return samples_; }
 
-  // The hand menu. Items act on the draw trigger's rising edge while the
-  // dominant aim point is over them (both hands tracked, not drawing); the
+  // The hand menu (when settings.hand_menu). Items act on the draw trigger's
+  // rising edge while the dominant aim point is over them (both hands
+  // tracked, not drawing); the
   // press is then used up until the trigger is released. `stacks` (>= 1) is
   // how many stacks next_stack cycles through; compare needs two.
   void set_stack_count(std::size_t stacks) { stack_count_ = stacks > 0 ? stacks : 1; }

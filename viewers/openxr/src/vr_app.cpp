@@ -81,7 +81,8 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   for (const auto& o : options.overrides) overrides.push_back(parse_override(o));
   const std::vector<StackConfig> configs = load_stacks(options.config, overrides);
   // The controllers are read as the first stack's input says.
-  const openxr::InputSettings settings = input_settings(configs.front(), err);
+  openxr::InputSettings settings = input_settings(configs.front(), err);
+  settings.hand_menu = true;  // drawn on the other hand (hand_actors.hpp)
   std::vector<StackInstance> instances;
   std::vector<std::string> names;
   for (const StackConfig& stack : configs) {

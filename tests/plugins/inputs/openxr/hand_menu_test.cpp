@@ -15,6 +15,12 @@ namespace {
 
 constexpr double dt = 1.0 / 90.0;
 
+InputSettings with_menu() {
+  InputSettings s;
+  s.hand_menu = true;
+  return s;
+}
+
 RigidPose left_hand() {
   RigidPose p;
   p.position = {-0.3, 1.2, 0.0};
@@ -65,7 +71,7 @@ TEST_CASE("every menu item is found at its own centre, and nothing off the panel
 }
 
 TEST_CASE("picking menu items records the commands and sets the tool and view", "[openxr]") {
-  GestureInterpreter g(InputSettings{}, Workspace{});
+  GestureInterpreter g(with_menu(), Workspace{});
   g.set_stack_count(2);
   int frame = 0;
   // Hovering highlights without a press.
@@ -106,7 +112,7 @@ TEST_CASE("picking menu items records the commands and sets the tool and view", 
 }
 
 TEST_CASE("compare needs two stacks", "[openxr]") {
-  GestureInterpreter g(InputSettings{}, Workspace{});
+  GestureInterpreter g(with_menu(), Workspace{});
   int frame = 0;
   pick(g, frame, MenuItem::compare);
   CHECK_FALSE(g.menu_view().compare);
@@ -115,7 +121,7 @@ TEST_CASE("compare needs two stacks", "[openxr]") {
 }
 
 TEST_CASE("the patch and erase tools act once per trigger press at the tip", "[openxr]") {
-  InputSettings settings;
+  const InputSettings settings = with_menu();
   GestureInterpreter g(settings, Workspace{});
   int frame = 0;
   pick(g, frame, MenuItem::patch);
@@ -146,8 +152,20 @@ TEST_CASE("the patch and erase tools act once per trigger press at the tip", "[o
   CHECK(g.mode() == Layer::free);
 }
 
-TEST_CASE("a trigger held across a focus loss picks nothing when focus returns", "[openxr]") {
+TEST_CASE("without the hand menu (headless recording) a press there is a stroke", "[openxr]") {
   GestureInterpreter g(InputSettings{}, Workspace{});
+  int frame = 0;
+  const Vec3 tip = menu_item_centre(left_hand(), MenuItem::undo);
+  g.step(at(frame++, tip, 0.9));
+  CHECK_FALSE(g.menu_hover().has_value());
+  g.step(at(frame++, tip + Vec3(0.05, 0, 0), 0.9));
+  const auto events = g.step(at(frame++, tip, 0.0));
+  REQUIRE(events.size() == 1);
+  CHECK(std::holds_alternative<StrokeEvent>(events[0].payload));
+}
+
+TEST_CASE("a trigger held across a focus loss picks nothing when focus returns", "[openxr]") {
+  GestureInterpreter g(with_menu(), Workspace{});
   int frame = 0;
   const Vec3 tip = menu_item_centre(left_hand(), MenuItem::undo);
   g.step(at(frame++, tip, 0.9));  // pressed on the menu: undo
