@@ -15,6 +15,7 @@
 #include "sketchlab/run/stack.hpp"
 #include "sketchlab/run/stop_signals.hpp"
 #include "sketchlab/viewer/display.hpp"
+#include "sketchlab/viewer/viewer_stacks.hpp"
 #include "vr_scene.hpp"
 #include "xr_actions.hpp"
 #include "xr_render_session.hpp"
@@ -27,21 +28,6 @@ std::filesystem::path default_recording() {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::gmtime(&now));
   return std::string("vr-") + stamp + ".jsonl";
-}
-
-// An experiment names its stacks (the hand menu switches and compares
-// them); a stack file is one stack.
-std::vector<StackConfig> load_stacks(const std::filesystem::path& file, const std::vector<Override>& overrides) {
-  try {
-    return load_experiment(file, overrides).stacks;
-  } catch (const ConfigError& experiment_error) {
-    try {
-      return {load_stack(file, overrides)};
-    } catch (const ConfigError& stack_error) {
-      throw ConfigError(std::string("not an experiment (") + experiment_error.what() + ") nor a stack (" +
-                        stack_error.what() + ")");
-    }
-  }
 }
 
 openxr::InputSettings input_settings(const StackConfig& stack, std::ostream& err) {
@@ -79,7 +65,8 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
            VrStats* stats) {
   std::vector<Override> overrides;
   for (const auto& o : options.overrides) overrides.push_back(parse_override(o));
-  const std::vector<StackConfig> configs = load_stacks(options.config, overrides);
+  // An experiment's stacks are switched and compared from the hand menu.
+  const std::vector<StackConfig> configs = viewer::load_viewer_stacks(options.config, overrides);
   // The controllers are read as the first stack's input says.
   openxr::InputSettings settings = input_settings(configs.front(), err);
   settings.hand_menu = true;  // drawn on the other hand (hand_actors.hpp)
