@@ -98,7 +98,8 @@ TEST_CASE("the stage, the brush tip at the aim pose and the menu's state are dra
   const auto dir = test::fresh_vr_dir("stage");
   const Vec3 tip(0.08, 1.35, 0.25);
   std::ostringstream s;
-  s << "option eye_size 320 240\noption fov 45 36\noption dump_dir " << dir.string() << "\n"
+  // 640 x 480: a menu square is about 16 px across.
+  s << "option eye_size 640 480\noption fov 45 36\noption dump_dir " << dir.string() << "\n"
     << "frame 3 " << head_down << " left=" << xyz(left_hand) << " right=" << xyz(tip) << "\nframe dump\n"  // 3
     << "frame right=" << xyz(openxr::menu_item_centre(left_pose(), MenuItem::undo)) << " dump\n"            // 4
     << press(MenuItem::shape) << "frame 2 right=" << xyz(tip) << "\nframe dump\n";                          // 11
@@ -141,9 +142,11 @@ TEST_CASE("the stage, the brush tip at the aim pose and the menu's state are dra
     CHECK(first.distance(on_item(MenuItem::raw_strokes), vr::menu_active_colour) <= 3);
     for (MenuItem item : {MenuItem::scaffold, MenuItem::shape, MenuItem::undo, MenuItem::compare, MenuItem::rejected})
       CHECK(first.distance(on_item(item), vr::menu_item_colour) <= 3);
+    // The tip covers the middle of the hovered square: look around it.
     int lit = 0;
-    for (double dx : {-0.35, 0.0, 0.35})
-      for (double dy : {-0.35, 0.35}) lit += hover.distance(on_item(MenuItem::undo, dx, dy), vr::menu_hover_colour) <= 3;
+    const std::pair<double, double> around[] = {{-0.3, -0.3}, {0.0, -0.3}, {0.3, -0.3}, {-0.3, 0.3}, {0.3, 0.3}};
+    for (const auto& [dx, dy] : around)
+      lit += hover.distance(on_item(MenuItem::undo, dx, dy), vr::menu_hover_colour) <= 3;
     CHECK(lit >= 3);
     CHECK(hover.distance(on_item(MenuItem::redo), vr::menu_item_colour) <= 3);
     CHECK(picked.distance(on_item(MenuItem::shape), vr::menu_active_colour) <= 3);
