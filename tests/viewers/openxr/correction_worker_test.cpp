@@ -55,7 +55,7 @@ Event stroke_event(StrokeId id, double y) {
 
 }  // namespace
 
-TEST_CASE("a slow corrector does not block submission; results appear when ready", "[openxr]") {
+TEST_CASE("a slow corrector does not block submission, and results appear when ready", "[openxr]") {
   const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_" + std::to_string(getpid()) + ".jsonl");
   auto live = std::make_unique<LiveSession>(RecordingHeader{},
                                             std::vector<StackInstance>{{"slow", std::make_shared<SlowCorrector>(300), nullptr}},

@@ -156,7 +156,7 @@ TEST_CASE("the stage, the brush tip at the aim pose and the menu's state are dra
   fs::remove_all(dir);
 }
 
-TEST_CASE("a stroke stays until corrected; the snapped curve glows in, its constraints flash and go",
+TEST_CASE("a stroke stays until corrected, then the snapped curve glows in and its constraints flash and go",
           "[openxr][viewer]") {
   test::ensure_display();
   const auto dir = test::fresh_vr_dir("feedback");

@@ -395,7 +395,8 @@ TEST_CASE("the grid near the hand and the mirror plane are drawn when the worksp
       shown_points += differs(p, 30, 2);
     }
   CHECK(total >= 10);
-  CHECK(shown_points >= 0.9 * total);
+  // (The pen in front of the hand hides up to three of them.)
+  CHECK(shown_points >= total - 3);
   // The mirror plane x = 0 tints what lies behind it, away from grid points.
   CHECK(differs(Vec3(0.0, 1.45, -0.45), 8, 0));
   CHECK_FALSE(differs(Vec3(0.45, 1.75, -0.45), 8, 0));  // beyond the plane's edge, off the grid
