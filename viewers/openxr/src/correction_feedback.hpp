@@ -49,10 +49,6 @@ class CorrectionFeedback {
   // Per frame: placement and fades.
   void update(vtkMatrix4x4* placement, double now);
 
-  // What is on screen (for tests and the benchmark's counters).
-  std::size_t pending() const { return pending_.size(); }
-  bool flashing() const { return !flash_.empty(); }
-
  private:
   void clear_flash();
   vtkRenderer* renderer_;

@@ -42,8 +42,6 @@ class VrScene {
   void update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
               openxr::Hand dominant, double now);
 
-  const CorrectionFeedback& feedback() const { return feedback_; }
-
  private:
   void remove_sketch_actors();
   vtkRenderer* renderer_;
