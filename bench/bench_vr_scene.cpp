@@ -75,6 +75,9 @@ Sketch large_sketch(int curves, int patches) {
   for (int i = 0; i < patches; ++i) {
     Patch patch;
     patch.id = static_cast<PatchId>(i + 1);
+    // Bounded by (all of) curve i + 1: what the viewer draws is the mesh.
+    const Curve& rim = edit.curves_added.at(static_cast<std::size_t>(i)).curve;
+    patch.boundary.push_back({static_cast<CurveId>(i + 1), 0.0, rim.t_max(), 0, 0});
     const Vec3 o = centre + 0.6 * Vec3(u(rng), u(rng), u(rng));
     const int n = 9;
     for (int a = 0; a < n; ++a)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's pictures, made by the viewer: `sketchlab vr` on the test
 # OpenXR runtime with scripted input; the runtime reads the left eye back
-# from the swapchain (`dump`), ImageMagick turns it into PNG.
+# from the swapchain (`dump`); Python's zlib turns it into PNG.
 # Usage (after a build): xvfb-run -a -s "-screen 0 1280x1024x24" viewers/openxr/doc/make_screenshots.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../../.." && pwd)
@@ -72,7 +72,17 @@ shot() {
   shift 2
   SKETCHLAB_XR_SCRIPT=$tmp/$name.txt "$build/bin/sketchlab" vr "$root/$config" -o "$tmp/$name.jsonl" --overwrite "$@" \
     >/dev/null
-  convert "$tmp/frame$(cat "$tmp/$name.frame")_eye0.ppm" "$out/$name.png"
+  python3 - "$tmp/frame$(cat "$tmp/$name.frame")_eye0.ppm" "$out/$name.png" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+magic, w, h, _max, pixels = data.split(maxsplit=4)
+w, h = int(w), int(h)
+rows = b"".join(b"\0" + pixels[3 * w * y:3 * w * (y + 1)] for y in range(h))
+chunk = lambda kind, body: struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
+png += chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b"")
+open(sys.argv[2], "wb").write(png)
+PY
 }
 shot stage configs/stacks/cassie.yaml --grid 0.1
 shot snap configs/stacks/cassie.yaml

@@ -3,7 +3,7 @@
 // once released it stays drawn as it was until its correction comes back
 // from the worker (so nothing blinks away while the stack works), then it
 // fades out over `transition_s` while the corrected curves of that stroke
-// glow and settle; the constraints the corrector enforced flash where they
+// glow (a halo in `glow_colour` around them) and settle; the constraints the corrector enforced flash where they
 // act for `flash_s` (and, when asked, the candidates it rejected). Schmidt
 // et al. 2009 §4 ("temporary visual feedback" of right-angle markers) and
 // ScaffoldSketch's users, who needed to see when and why a snap fired.
