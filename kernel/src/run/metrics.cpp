@@ -289,7 +289,7 @@ std::optional<Vec3> single_eye(const Sketch& sketch, const std::vector<StrokeId>
 // perspective image is unchanged when the scene is scaled about the eye, so
 // from a single view 3D is determined only up to that scale (Schmidt et al.
 // 2009 §2 fix it by putting the first stroke in the ground plane; JustDrawIt
-// §5.1 by the view plane through the origin). The scale s minimising the
+// §2 by creating curves on the view plane centred at the origin). The scale s minimising the
 // squared distances of e + s(p − e) to the intended curves is found by
 // alternating closest points and the closed-form s = Σ(p−e)·(q−e) / Σ|p−e|²
 // (an ICP restricted to this one-parameter group), started from the ratio of

@@ -132,7 +132,8 @@ GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net) {
   for (const auto& gc : out.curves)
     for (const Vec3& p : gc.curve.control_points) floor = std::min(floor, p.y());
   const bool ground_line = std::any_of(out.curves.begin(), out.curves.end(), [&](const GroundTruthCurve& gc) {
-    return is_line(gc.curve) && std::abs(start(gc.curve).y() - floor) <= tol &&
+    return is_line(gc.curve) && axis_of(end(gc.curve) - start(gc.curve)) >= 0 &&
+           std::abs(start(gc.curve).y() - floor) <= tol &&
            std::abs(end(gc.curve).y() - floor) <= tol;
   });
   if (!ground_line) {
@@ -196,7 +197,9 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net) {
   std::optional<std::size_t> first;
   for (std::size_t i = 0; i < n; ++i) {
     const Curve& c = net.curves[i].curve;
-    if (net.curves[i].layer == Layer::scaffold && is_line(c) && std::abs(start(c).y() - floor) <= tol &&
+    // An axis-aligned edge: it defines the primary vanishing directions.
+    if (net.curves[i].layer == Layer::scaffold && is_line(c) && axis_of(end(c) - start(c)) >= 0 &&
+        std::abs(start(c).y() - floor) <= tol &&
         std::abs(end(c).y() - floor) <= tol && (!first || length[i] > length[*first]))
       first = i;
   }

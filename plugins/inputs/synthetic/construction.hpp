@@ -30,7 +30,7 @@ namespace sketchlab::synthetic {
 //  - a line along no axis that does not join two circles gets the axis
 //    path from its start to its end (its bounding box's edges: the slanted
 //    line then connects two known points);
-//  - when no horizontal line lies in the lowest horizontal plane of the
+//  - when no axis-aligned horizontal line lies in the lowest plane of the
 //    network, the footprint: the axis-aligned rectangle around the curve ends
 //    in that plane (the chair's feet), so the first stroke can lie in the
 //    ground plane.
@@ -43,8 +43,10 @@ namespace sketchlab::synthetic {
 // axis-aligned, up +y).
 GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net);
 
-// The drawing order of §2: first the longest horizontal scaffold line in the
-// lowest horizontal plane (the ground plane, Fig. 3a); then, scaffold before
+// The drawing order of §2: first the longest axis-aligned horizontal scaffold
+// line in the lowest horizontal plane (the ground plane, Fig. 3a: it defines
+// the primary vanishing directions — its own, its horizontal perpendicular
+// and the vertical — so a diagonal will not do); then, scaffold before
 // shape, repeatedly the curve with the most ends on what is drawn (two, then
 // one, then none), the longest first (ties keep network order), reversed to
 // start from the drawing when only its end is on it.
