@@ -10,6 +10,7 @@
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/bounding_box.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/geometry/split.hpp"
 
 namespace sketchlab::synthetic {
 namespace {
@@ -152,18 +153,10 @@ GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net) {
   for (std::size_t i = 0; i < out.curves.size(); ++i) {
     const Curve c = out.curves[i].curve;
     if (!c.closed || c.segment_count() < 2) continue;
-    const std::size_t half = static_cast<std::size_t>(c.segment_count() / 2);
-    auto piece = [&](std::size_t from, std::size_t to) {
-      Curve p;
-      p.kind = c.kind;
-      p.control_points.assign(c.control_points.begin() + static_cast<std::ptrdiff_t>(3 * from),
-                              c.control_points.begin() + static_cast<std::ptrdiff_t>(3 * to + 1));
-      p.sharp.assign(c.sharp.begin() + static_cast<std::ptrdiff_t>(from), c.sharp.begin() + static_cast<std::ptrdiff_t>(to + 1));
-      return p;
-    };
-    out.curves[i].curve = piece(0, half);
+    const double half = static_cast<double>(c.segment_count() / 2);
+    out.curves[i].curve = sub_curve(c, 0.0, half);
     out.curves.insert(out.curves.begin() + static_cast<std::ptrdiff_t>(i + 1),
-                      {piece(half, static_cast<std::size_t>(c.segment_count())), out.curves[i].layer});
+                      {sub_curve(c, half, c.t_max()), out.curves[i].layer});
     ++i;
   }
   return out;

@@ -11,10 +11,6 @@
 
 namespace sketchlab::synthetic {
 
-// The piece of `curve` between parameters t0 < t1 (0 <= t0, t1 <= t_max),
-// exact (de Casteljau on the end segments).
-Curve sub_curve(const Curve& curve, double t0, double t1);
-
 // The plan's curves drawn JustDrawIt-style: first, in view 0, every open
 // curve as two strokes — [0, 0.6] and then [0.45, 1] of its parameter range,
 // the second starting back on the first (a multi-stroke curve, Fig. 2) — and

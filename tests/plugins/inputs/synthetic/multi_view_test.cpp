@@ -12,24 +12,6 @@
 using namespace sketchlab;
 using namespace sketchlab::synthetic;
 
-TEST_CASE("sub_curve is the exact piece of the curve", "[synthetic][multi_view]") {
-  const GroundTruthNetwork mug = make_mug(model_center, 0.3);
-  const Curve& handle = mug.curves.back().curve;  // two cubic segments
-  for (const auto& [t0, t1] : std::vector<std::pair<double, double>>{{0.0, 1.2}, {0.9, 2.0}, {0.3, 0.7}, {0.0, 2.0}}) {
-    const Curve piece = sub_curve(handle, t0, t1);
-    CHECK(validate(piece).empty());
-    // A point of the piece at its parameter u is the curve's point there: the
-    // pieces' segments map linearly onto the curve's.
-    CHECK((evaluate(piece, 0.0) - evaluate(handle, t0)).norm() < 1e-12);
-    CHECK((evaluate(piece, piece.t_max()) - evaluate(handle, t1)).norm() < 1e-12);
-    for (int k = 0; k <= 20; ++k) {
-      const double t = t0 + (t1 - t0) * k / 20.0;
-      CHECK(closest_point(piece, evaluate(handle, t)).distance < 1e-9);
-    }
-  }
-  CHECK_THROWS_AS(sub_curve(handle, 1.0, 1.0), std::invalid_argument);
-}
-
 TEST_CASE("a JustDrawIt session draws each curve in two strokes, then oversketches it from a second view",
           "[synthetic][multi_view]") {
   SynthesisParams p = support::perfect("chair", Modality::tablet);
