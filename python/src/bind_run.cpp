@@ -16,6 +16,13 @@ namespace {
 
 using ParamMap = std::map<std::string, ParamValue>;
 
+// Overrides as the command line takes them ("stacks.0.corrector.params.delta=0.03").
+std::vector<Override> parse_overrides(const std::vector<std::string>& texts) {
+  std::vector<Override> out;
+  for (const auto& text : texts) out.push_back(parse_override(text));
+  return out;
+}
+
 // A stack from plugin names and parameters: the StackConfig a YAML file
 // would give, instantiated the same way (same parameter checks and errors).
 StackInstance make_stack(const PluginHost& host, const std::string& corrector, const ParamMap& params,
@@ -47,9 +54,7 @@ void bind_stacks(py::module_& m) {
       })
       .def("to_yaml", [](const StackConfig& s) { return stack_to_yaml(s); });
   m.def("load_stack", [](const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    std::vector<Override> o;
-    for (const auto& text : overrides) o.push_back(parse_override(text));
-    return load_stack(file, o);
+    return load_stack(file, parse_overrides(overrides));
   }, py::arg("file"), py::arg("overrides") = std::vector<std::string>{},
         "A stack YAML file; overrides as on the command line ('corrector.params.delta=0.03')");
 
@@ -138,9 +143,7 @@ void bind_experiments(py::module_& m) {
       .def_readonly("stacks", &ExperimentConfig::stacks)
       .def_readonly("resolved_yaml", &ExperimentConfig::resolved_yaml);
   m.def("load_experiment", [](const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    std::vector<Override> o;
-    for (const auto& text : overrides) o.push_back(parse_override(text));
-    return load_experiment(file, o);
+    return load_experiment(file, parse_overrides(overrides));
   }, py::arg("file"), py::arg("overrides") = std::vector<std::string>{},
         "An experiment YAML file; overrides as `sketchlab run --set` takes them");
   py::class_<CaseResult>(m, "CaseResult")

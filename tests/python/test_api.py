@@ -101,7 +101,7 @@ def test_replay_matches_the_cli_run_byte_for_byte(sl, small, tmp_path):
     assert len(result.steps) == len(small)
     exp = tmp_path / "one.yaml"
     exp.write_text(f"experiment: one\nrecordings: [{SMALL}]\n"
-                   f"stacks: [{{name: cassie, corrector: {{plugin: cassie}}}}]\n"
+                   "stacks: [{name: cassie, corrector: {plugin: cassie, params: {mirror: plane}}}]\n"
                    f"outputs: {{dir: {tmp_path}/runs, timestamp: false}}\n")
     code, _, stderr = run_cli("run", str(exp), "--no-timings", "-j", "1")
     assert code == 0, stderr
