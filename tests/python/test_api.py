@@ -77,8 +77,11 @@ def test_strokes_from_numpy_and_a_live_session_with_undo(sl):
     assert list(session.sketch.network.curves) == [1]
     session.handle(sl.Event.redo(2.1))
     assert len(session.sketch.network.curves) == 2
-    assert session.revert_last() and session.revert_last()
-    assert list(session.sketch.network.curves) == [1]
+    # Stepping back: before the redo, before the undo, before stroke 2.
+    assert session.revert_last() and list(session.sketch.network.curves) == [1]
+    assert session.revert_last() and list(session.sketch.network.curves) == [1, 2]
+    assert session.revert_last() and list(session.sketch.network.curves) == [1]
+    assert session.events_handled == 1
 
 
 def test_live_session_records_what_it_folds(sl, small, tmp_path):
@@ -112,7 +115,7 @@ def test_replay_matches_the_cli_run_byte_for_byte(sl, small, tmp_path):
 def test_experiment_rows_and_two_stacks_compared(sl, tmp_path):
     exp = tmp_path / "two.yaml"
     exp.write_text(f"experiment: two\nrecordings: [{SMALL}]\n"
-                   "stacks: [{corrector: freehand}, {corrector: snap_ends}]\n"
+                   "stacks: [{corrector: {plugin: freehand}}, {corrector: {plugin: snap_ends}}]\n"
                    f"outputs: {{dir: {tmp_path}/runs}}\n")
     summary = sl.experiment(exp, ["stacks.1.corrector.params.radius=0.03"], jobs=2)
     assert summary.failed == 0

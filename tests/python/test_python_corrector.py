@@ -87,8 +87,9 @@ def test_a_python_exception_becomes_the_strokes_error(sl, small, broken):
     strokes = [s for s in result.steps if s.event == "stroke"]
     failed = [s for s in strokes if s.error]
     assert len(failed) == len(strokes) // 2
-    assert failed[0].error == (f"python corrector {broken}:Raises: ValueError: boom on stroke "
-                               f"{failed[0].stroke}")
+    # One line: the exception, where it was raised (the session prefixes "corrector: ").
+    assert failed[0].error == (f"corrector: python corrector {broken}:Raises: ValueError: boom on stroke "
+                               f"{failed[0].stroke} (broken.py:11)")
     # The session went on: every other stroke has its curve, every raw stroke is kept.
     assert all(s.curves_added == (0 if s.error else 1) for s in strokes)
     assert len(result.sketch.strokes) == len(strokes)
@@ -97,14 +98,19 @@ def test_a_python_exception_becomes_the_strokes_error(sl, small, broken):
 def test_a_wrong_return_type_becomes_the_strokes_error(sl, small, broken):
     result = sl.replay(small, python_stack(sl, "WrongType", module=broken))
     errors = {s.error for s in result.steps if s.event == "stroke"}
-    assert errors == {f"python corrector {broken}:WrongType: correct() returned int; "
+    assert errors == {f"corrector: python corrector {broken}:WrongType: correct() returned int; "
                       "expected sketchlab.Correction or sketchlab.Edit"}
 
 
 def test_construction_errors_name_the_class_and_the_parameter(sl, broken):
-    with pytest.raises(sl.PluginError, match="FailsInInit: RuntimeError: no model file"):
+    # Building a stack reports where it was configured (here "<python>") first.
+    with pytest.raises(sl.ConfigError) as err:
         python_stack(sl, "FailsInInit", module=broken)
-    with pytest.raises(sl.PluginError, match="No module named 'nope_no_such_module'"):
+    assert str(err.value) == (f"<python>: plugin 'python' failed to start: python corrector "
+                              f"{broken}:FailsInInit: RuntimeError: no model file (broken.py:20)")
+    with pytest.raises(sl.ConfigError, match="ModuleNotFoundError: No module named 'nope_no_such_module'"):
         python_stack(sl, "X", module="nope_no_such_module")
-    with pytest.raises(RuntimeError, match="parameter 'module' is required"):
+    with pytest.raises(sl.ConfigError, match="parameter 'module' is required"):
         sl.stack("python")
+    with pytest.raises(sl.ConfigError, match="'params' must be a JSON object"):
+        sl.stack("python", {"module": broken, "class": "WrongType", "params": "[1, 2]"})

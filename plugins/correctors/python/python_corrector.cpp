@@ -37,6 +37,21 @@ py::object load_module(const std::string& module) {
   return py::module_::import("importlib").attr("import_module")(module);
 }
 
+// One line: "ValueError: message (file.py:12)", the innermost frame of the
+// traceback (pybind11's what() appends the whole stack on further lines).
+std::string describe(const py::error_already_set& e) {
+  std::string text = py::str(e.type().attr("__name__")).cast<std::string>();
+  if (const std::string value = py::str(e.value()).cast<std::string>(); !value.empty()) text += ": " + value;
+  py::handle tb = e.trace();
+  if (tb) {
+    while (py::hasattr(tb, "tb_next") && !tb.attr("tb_next").is_none()) tb = tb.attr("tb_next");
+    const std::string file = py::str(tb.attr("tb_frame").attr("f_code").attr("co_filename")).cast<std::string>();
+    text += " (" + std::filesystem::path(file).filename().string() + ":" +
+            py::str(tb.attr("tb_lineno")).cast<std::string>() + ")";
+  }
+  return text;
+}
+
 class PythonCorrector : public Corrector {
  public:
   explicit PythonCorrector(const Params& p)
@@ -47,15 +62,15 @@ class PythonCorrector : public Corrector {
     py::gil_scoped_acquire gil;
     try {
       const py::object cls = load_module(p.string("module")).attr(p.string("class").c_str());
-      const py::dict kwargs = py::module_::import("json").attr("loads")(p.string("params"));
+      const py::object kwargs = py::module_::import("json").attr("loads")(p.string("params"));
+      if (!py::isinstance<py::dict>(kwargs))
+        throw ParamError("params", "python corrector " + label_ +
+                                       ": parameter 'params' must be a JSON object (keyword arguments of the class)");
       object_ = cls(**kwargs);
       if (!py::hasattr(object_, "correct"))
         throw std::runtime_error("python corrector " + label_ + ": the class has no correct(stroke, sketch) method");
     } catch (py::error_already_set& e) {
-      throw std::runtime_error("python corrector " + label_ + ": " + e.what());
-    } catch (py::cast_error&) {
-      throw ParamError("params", "python corrector " + label_ +
-                                     ": parameter 'params' must be a JSON object (keyword arguments of the class)");
+      throw std::runtime_error("python corrector " + label_ + ": " + describe(e));
     }
   }
 
@@ -85,7 +100,7 @@ class PythonCorrector : public Corrector {
       return c;
     } catch (py::error_already_set& e) {
       Correction c;
-      c.error = "python corrector " + label_ + ": " + e.what();
+      c.error = "python corrector " + label_ + ": " + describe(e);
       return c;
     }
   }
