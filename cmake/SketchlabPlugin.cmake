@@ -32,7 +32,10 @@ function(sketchlab_add_plugin name)
   add_library(${impl} OBJECT ${ARG_SOURCES})
   target_link_libraries(${impl} PUBLIC sketchlab::kernel ${ARG_LIBRARIES})
   target_include_directories(${impl} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR} ${ARG_INCLUDES})
-  set_target_properties(${impl} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  # PIC: the objects go into a shared module (a project of its own need not
+  # set CMAKE_POSITION_INDEPENDENT_CODE as the sketchlab build does).
+  set_target_properties(${impl} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
+                                           POSITION_INDEPENDENT_CODE ON)
   if(COMMAND sketchlab_warnings)
     sketchlab_warnings(${impl})
   endif()

@@ -80,9 +80,9 @@ r = sl.replay(sl.read_recording(session), sl.stack("snap_ends"))
 assert len(r.sketch.network.nodes) > 0
 PY
   ) || fail "the installed Python package"
-  step "the installed sketchlab runs a Python corrector (embedded interpreter)"
-  out=$(cd "$work" && "$sketchlab" teacher-forced "$session" --corrector python \
-        --param module="$root/python/examples/snap_ends.py" --param class=SnapEnds 2>&1) ||
+  step "the installed sketchlab runs a Python corrector (embedded interpreter; by default the"
+  step "installed package's sketchlab.snap_ends)"
+  out=$(cd "$work" && "$sketchlab" teacher-forced "$session" --corrector python 2>&1) ||
     fail "python corrector in the installed binary: $out"
   grep -q '^errors 0' <<<"$out" || fail "python corrector errors: $out"
 fi

@@ -9,7 +9,7 @@
 //
 // It is the example of docs/plugin-authoring.md (built out of tree against
 // the installed SDK), and the C++ reference the Python snap_ends corrector
-// (python/examples/snap_ends.py) must reproduce bit for bit.
+// (python/sketchlab/snap_ends.py) must reproduce bit for bit.
 #include "sketchlab/plugin/plugin_api.hpp"
 #include "sketchlab/session.hpp"
 

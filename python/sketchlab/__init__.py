@@ -12,8 +12,8 @@ import json as _json
 import os as _os
 
 from ._sketchlab import *  # noqa: F401,F403
-from ._sketchlab import (Event, PluginHost, Recording, make_stack, instantiate_stack,
-                         load_stack, run_experiment, replay, __version__)  # noqa: F401
+from ._sketchlab import (Event, PluginHost, instantiate_stack, load_experiment, load_stack,
+                         make_stack, run_experiment, __version__)  # noqa: F401
 
 _host = None
 
@@ -57,7 +57,7 @@ def corrector(name, params=None):
 
 def experiment(path, overrides=(), jobs=0, timings=True):
     """Runs an experiment file (as `sketchlab run`); returns the RunSummary."""
-    return run_experiment(load_experiment(path, list(overrides)), host(), jobs, timings)  # noqa: F405
+    return run_experiment(load_experiment(path, list(overrides)), host(), jobs, timings)
 
 
 def metrics_rows(summary):

@@ -10,7 +10,7 @@ SOURCE_DIR = os.environ.get("SKETCHLAB_SOURCE_DIR",
 CLI = os.environ.get("SKETCHLAB_CLI", "sketchlab")
 # The smallest bundled CASSIE session with a reference track (81 events).
 SMALL = os.path.join(SOURCE_DIR, "data", "recordings", "01-2-2.jsonl")
-SNAP_ENDS_PY = os.path.join(SOURCE_DIR, "python", "examples", "snap_ends.py")
+SNAP_ENDS_PY = os.path.join(SOURCE_DIR, "python", "sketchlab", "snap_ends.py")
 
 
 def run_cli(*args, env=None):

@@ -24,6 +24,12 @@ def test_python_snap_ends_reproduces_the_cpp_reference(sl, small):
     assert [s.stats.extra for s in py.steps] == [s.stats.extra for s in cpp.steps]
 
 
+def test_the_default_python_corrector_is_the_bundled_snap_ends(sl, small):
+    cpp = sl.replay(small, sl.stack("snap_ends"))
+    py = sl.replay(small, sl.stack("python"))
+    assert py.to_json() == cpp.to_json()
+
+
 def test_python_corrector_in_the_cli_matches_the_cpp_one():
     args = ["teacher-forced", SMALL, "--snap-tolerance", "1e-4"]
     code_c, out_c, err_c = run_cli(*args, "--corrector", "snap_ends")
@@ -110,7 +116,7 @@ def test_construction_errors_name_the_class_and_the_parameter(sl, broken):
                               f"{broken}:FailsInInit: RuntimeError: no model file (broken.py:20)")
     with pytest.raises(sl.ConfigError, match="ModuleNotFoundError: No module named 'nope_no_such_module'"):
         python_stack(sl, "X", module="nope_no_such_module")
-    with pytest.raises(sl.ConfigError, match="parameter 'module' is required"):
-        sl.stack("python")
+    with pytest.raises(sl.ConfigError, match="parameter 'module' is empty"):
+        sl.stack("python", {"module": ""})
     with pytest.raises(sl.ConfigError, match="'params' must be a JSON object"):
         sl.stack("python", {"module": broken, "class": "WrongType", "params": "[1, 2]"})

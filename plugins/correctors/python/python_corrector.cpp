@@ -57,7 +57,7 @@ class PythonCorrector : public Corrector {
   explicit PythonCorrector(const Params& p)
       : label_(p.string("module") + ":" + p.string("class")) {
     if (p.string("module").empty())
-      throw ParamError("module", "python corrector: parameter 'module' is required: a .py file or a module name");
+      throw ParamError("module", "python corrector: parameter 'module' is empty: give a .py file or a module name");
     python_corrector::ensure_interpreter();
     py::gil_scoped_acquire gil;
     try {
@@ -112,9 +112,10 @@ class PythonCorrector : public Corrector {
 
 PluginDescriptor describe() {
   std::vector<ParamSpec> specs{
-      {"module", ParamType::string, std::string(), {}, {}, {}, "",
-       "the Python corrector: a .py file (relative to the working directory) or an importable module name"},
-      {"class", ParamType::string, std::string("Corrector"), {}, {}, {}, "",
+      {"module", ParamType::string, std::string("sketchlab.snap_ends"), {}, {}, {}, "",
+       "the Python corrector: a .py file (relative to the working directory) or an importable module name "
+       "(default: the example bundled with the sketchlab package)"},
+      {"class", ParamType::string, std::string("SnapEnds"), {}, {}, {}, "",
        "the class in it; instantiated once per stack with `params` as keyword arguments"},
       {"params", ParamType::string, std::string("{}"), {}, {}, {}, "",
        "JSON object of keyword arguments for the class"},

@@ -1,8 +1,8 @@
 """snap_ends in Python: the example C++ corrector (examples/plugin/
-snap_ends_corrector.cpp) written against the Python API, for the python
-corrector plugin:
+snap_ends_corrector.cpp) written against the Python API; what the python
+corrector plugin runs by default:
 
-    corrector: {plugin: python, params: {module: python/examples/snap_ends.py,
+    corrector: {plugin: python, params: {module: sketchlab.snap_ends,
                                          class: SnapEnds, params: '{"radius": 0.02}'}}
 
 Each stroke is fitted by the kernel's freehand fit (CASSIE app preprocessing),
