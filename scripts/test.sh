@@ -23,6 +23,14 @@ esac
 "$root/scripts/build.sh"
 (cd "$root/build" && ctest --output-on-failure -j "$jobs")
 
+# --- installed SDK (issue #22) ---------------------------------------------
+# Installs build/ into a clean prefix, builds examples/plugin out of tree
+# against it, loads it into the installed binary and imports the installed
+# Python package (scripts/check-install.sh, about a minute). The Python API's
+# pytest suites run in the ctest above (tests/python, label "python").
+"$root/scripts/check-install.sh" "$root/build"
+# --- end installed SDK -------------------------------------------------------
+
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 if [ "$scope" = kernel ]; then
   "$root/scripts/build.sh" --sanitize sketchlab_kernel_tests
