@@ -12,9 +12,6 @@
 #include "elf_check.hpp"
 #include "plugin_probe.hpp"
 
-#ifndef SKETCHLAB_BUILD_PLUGIN_DIR
-#define SKETCHLAB_BUILD_PLUGIN_DIR ""
-#endif
 #ifndef SKETCHLAB_PLUGIN_SUBDIR
 #define SKETCHLAB_PLUGIN_SUBDIR "lib/sketchlab/plugins"
 #endif
