@@ -21,6 +21,9 @@ packages=(
   ccache
   # libFuzzer harnesses (fuzz/, scripts/fuzz.sh): clang with its runtimes
   clang libclang-rt-14-dev
+  # Python API (python/) and Python correctors (plugins/correctors/python),
+  # for Debian's /usr/bin/python3
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
 )
 
 missing=()

@@ -14,13 +14,22 @@ jobs=$(nproc)
 case "${SANITIZE:-all}" in
   all)
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-    "$root/scripts/build.sh" --sanitize
-    (cd "$root/build-asan" && ctest --output-on-failure -j "$jobs") ;;
+    build="$root/build-asan"
+    "$root/scripts/build.sh" --sanitize ;;
   none)
-    "$root/scripts/build.sh"
-    (cd "$root/build" && ctest --output-on-failure -j "$jobs") ;;
+    build="$root/build"
+    "$root/scripts/build.sh" ;;
   *) echo "test.sh: SANITIZE=$SANITIZE: allowed values are all, none" >&2; exit 2 ;;
 esac
+(cd "$build" && ctest --output-on-failure -j "$jobs")
+
+# --- installed SDK (issue #22) ---------------------------------------------
+# Installs the build just tested into a clean prefix, builds examples/plugin
+# out of tree against it, loads it into the installed binary and imports the
+# installed Python package (scripts/check-install.sh, seconds). The Python
+# API's pytest suites run in the ctest above (tests/python, label "python").
+"$root/scripts/check-install.sh" "$build"
+# --- end installed SDK -------------------------------------------------------
 
 if [ "${FUZZ_SECONDS:-60}" != 0 ]; then
   "$root/scripts/fuzz.sh"

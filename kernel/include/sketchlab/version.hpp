@@ -26,10 +26,13 @@
 #define SKETCHLAB_STDLIB "unknown-stdlib"
 #endif
 
-// SKETCHLAB_BUILD_TYPE is set by CMake for every target ("Release",
-// "Debug+asan+ubsan", ...).
+// SKETCHLAB_BUILD_TYPE ("Release", "Debug+asan+ubsan", ...): CMake sets it
+// for every target of the sketchlab build; code built against an installed
+// sketchlab (out-of-tree plugins) gets the host's value from the configured
+// header installed with the kernel (cmake/build_config.hpp.in), so its
+// fingerprint matches the installed host without hand-set flags.
 #ifndef SKETCHLAB_BUILD_TYPE
-#define SKETCHLAB_BUILD_TYPE "unspecified"
+#include "sketchlab/build_config.hpp"
 #endif
 
 #define SKETCHLAB_BUILD_FINGERPRINT                                                  \

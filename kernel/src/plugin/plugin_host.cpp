@@ -12,9 +12,6 @@
 #include "elf_check.hpp"
 #include "plugin_probe.hpp"
 
-#ifndef SKETCHLAB_BUILD_PLUGIN_DIR
-#define SKETCHLAB_BUILD_PLUGIN_DIR ""
-#endif
 #ifndef SKETCHLAB_PLUGIN_SUBDIR
 #define SKETCHLAB_PLUGIN_SUBDIR "lib/sketchlab/plugins"
 #endif
@@ -109,10 +106,24 @@ PluginLoadOptions PluginLoadOptions::from_environment() {
   return options;
 }
 
+namespace {
+// The directory of this libsketchlab: <build>/lib in a build tree,
+// <prefix>/lib once installed; empty if unknown.
+fs::path kernel_library_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&kernel_library_dir), &info) == 0 || !info.dli_fname) return {};
+  return fs::path(info.dli_fname).parent_path();
+}
+}  // namespace
+
 std::vector<fs::path> PluginHost::default_search_paths() {
   std::vector<fs::path> dirs;
   std::set<fs::path> seen;
-  add_existing_dir(dirs, seen, SKETCHLAB_BUILD_PLUGIN_DIR);
+  // The plugins of the tree this kernel belongs to (not a build tree's
+  // compiled-in path: an installed kernel must not pick up the plugins of
+  // the build it was installed from).
+  if (const fs::path lib = kernel_library_dir(); !lib.empty())
+    add_existing_dir(dirs, seen, lib / ".." / SKETCHLAB_PLUGIN_SUBDIR);
 
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);

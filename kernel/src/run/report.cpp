@@ -19,7 +19,8 @@ namespace {
 const std::vector<std::string> headline = {
     "latency_p50_ms", "latency_p95_ms", "curves", "nodes", "patches", "dangling_endpoint_ratio",
     "input_deviation_mean_m", "ref_cassie_endpoint_mean_m", "ref_cassie_snap_agreement",
-    "gt_distance_mean_m"};
+    "gt_distance_mean_m", "gt_distance_mean_aligned_eye_scale_m", "gt_parallel_recall",
+    "gt_perpendicular_recall", "gt_coincident_point_recall"};
 
 std::string html_escape(const std::string& s) {
   std::string out;

@@ -8,6 +8,7 @@
 #include "camera.hpp"
 #include "scaffold.hpp"
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/network_nodes.hpp"
 #include "stroke_2d.hpp"
 #include "stroke_analysis.hpp"
 
@@ -28,6 +29,25 @@ bool near_new_geometry(const Stroke& stroke, const std::vector<NetworkCurve>& ad
       if (q && nearest_on_polyline(s2.points, *q).distance <= r) return true;
     }
   return false;
+}
+
+// Nodes where the new curves meet the network in 3D: the inference puts an
+// end or a curve joint exactly on a vertex, a line or a curve (§3.1
+// position constraints Cᵒ, §3.2 position constraints), so every joint within
+// `tolerance` of an existing curve is a junction. Guidelines are construction
+// aids (§2.2), not part of the curve network: they get no nodes.
+void add_nodes(const Network& network, double tolerance, Edit& edit) {
+  NodeId next = network.next_node_id();
+  const auto guide = [&](CurveId id) {
+    const NetworkCurve* nc = network.find_curve(id);
+    return nc && nc->layer == Layer::guide;
+  };
+  for (const NetworkCurve& nc : std::vector<NetworkCurve>(edit.curves_added)) {
+    if (nc.layer == Layer::guide) continue;
+    const int joints = nc.curve.segment_count() + (nc.curve.closed ? 0 : 1);
+    for (int j = 0; j < joints; ++j)
+      connect_point(network, evaluate(nc.curve, j), nc.id, j, tolerance, edit, next, guide);
+  }
 }
 
 }  // namespace
@@ -101,6 +121,7 @@ Correction AnalyticCorrector::correct(const Stroke& stroke, const Sketch& sketch
         if (id != stroke.id) still_free.push_back(id);
     }
     if (out.kind == StrokeOutcome::Kind::free) still_free.push_back(stroke.id);
+    add_nodes(sketch.network, 10.0 * scaffold.tolerance, c.edit);
     c.stats.extra["reinferred"] = reinferred;
     c.stats.extra["free_strokes"] = static_cast<double>(still_free.size());
   } catch (const std::exception& e) {

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "network_nodes.hpp"
+#include "sketchlab/network_nodes.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/geometry/polyline.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "mvc_curve.hpp"
-#include "network_nodes.hpp"
+#include "sketchlab/network_nodes.hpp"
 #include "scaffold_line.hpp"
 #include "shape_keypoints.hpp"
 #include "sketchlab/geometry/bezier.hpp"

@@ -64,6 +64,8 @@ std::vector<Event> GestureInterpreter::step(const ControllerFrame& raw) {
     grab_ = Grab::none;
     end_stroke(frame.time, events);
     previous_buttons_.fill(true);
+    trigger_was_pressed_ = true;  // a trigger held across the loss picks nothing
+    hover_.reset();
     return events;
   }
   update_grab(frame, events);
@@ -146,6 +148,21 @@ void GestureInterpreter::update_draw(const ControllerFrame& frame, std::vector<E
   const bool pressed = std::isfinite(frame.draw_value) && frame.draw_value >= settings_.draw_threshold;
   const bool dominant_grabbing = grab_ != Grab::none && (grab_ == Grab::two || grab_hand_ == static_cast<int>(settings_.dominant));
   if (drawing_ && (!pressed || dominant_grabbing)) end_stroke(frame.time, events);
+  const bool rising = pressed && !trigger_was_pressed_;
+  trigger_was_pressed_ = pressed;
+  if (!pressed) trigger_used_ = false;
+  const HandFrame& holder = frame.hands[1 - static_cast<int>(settings_.dominant)];
+  hover_.reset();
+  if (settings_.hand_menu && !drawing_ && hand.tracked && holder.tracked)
+    hover_ = menu_item_at(holder.aim, hand.aim.position);
+  if (!drawing_ && rising && !dominant_grabbing && (hover_ || tool_ != Tool::draw)) {
+    trigger_used_ = true;
+    if (hover_)
+      pick(*hover_, frame.time, events);
+    else
+      use_tool(tool_, hand, frame.time, events);
+  }
+  if (trigger_used_ || tool_ != Tool::draw) return;
   if (!drawing_ && pressed && !dominant_grabbing && hand.tracked) drawing_ = true;
   if (!drawing_ || !hand.tracked) return;
   Sample s;
@@ -162,13 +179,47 @@ void GestureInterpreter::update_draw(const ControllerFrame& frame, std::vector<E
   }
 }
 
+void GestureInterpreter::pick(MenuItem item, double time, std::vector<Event>& events) {
+  const auto set_mode = [&](Layer layer) {
+    tool_ = Tool::draw;
+    if (mode_ == layer) return;
+    mode_ = layer;
+    events.push_back({time, ModeEvent{mode_}});
+  };
+  switch (item) {
+    case MenuItem::scaffold: set_mode(Layer::scaffold); break;
+    case MenuItem::shape: set_mode(Layer::shape); break;
+    case MenuItem::free: set_mode(Layer::free); break;
+    case MenuItem::patch: tool_ = tool_ == Tool::patch ? Tool::draw : Tool::patch; break;
+    case MenuItem::erase: tool_ = tool_ == Tool::erase ? Tool::draw : Tool::erase; break;
+    case MenuItem::correction:
+      correction_ = !correction_;
+      events.push_back({time, CorrectionEvent{correction_}});
+      break;
+    case MenuItem::undo: events.push_back({time, UndoEvent{}}); break;
+    case MenuItem::redo: events.push_back({time, RedoEvent{}}); break;
+    case MenuItem::next_stack: view_.stack = (view_.stack + 1) % stack_count_; break;
+    case MenuItem::compare: view_.compare = !view_.compare && stack_count_ >= 2; break;
+    case MenuItem::raw_strokes: view_.raw_strokes = !view_.raw_strokes; break;
+    case MenuItem::rejected: view_.rejected = !view_.rejected; break;
+  }
+}
+
+void GestureInterpreter::use_tool(Tool tool, const HandFrame& hand, double time, std::vector<Event>& events) {
+  if (!hand.tracked) return;
+  const Vec3 point = placement_.to_workspace(hand.aim.position);
+  if (!recordable(point)) return;
+  if (tool == Tool::patch) events.push_back({time, AddPatchEvent{point}});
+  if (tool == Tool::erase)
+    events.push_back({time, DeleteNearEvent{point, scaled_threshold(settings_.delete_radius, workspace_.scale)}});
+}
+
 void GestureInterpreter::update_commands(const ControllerFrame& frame, std::vector<Event>& events) {
   const HandFrame& hand = frame.hands[static_cast<int>(settings_.dominant)];
   for (std::size_t i = 0; i < command_count; ++i) {
     const bool pressed = frame.buttons[i] && !previous_buttons_[i];
     previous_buttons_[i] = frame.buttons[i];
     if (!pressed) continue;
-    const Vec3 point = placement_.to_workspace(hand.aim.position);
     switch (static_cast<Command>(i)) {
       case Command::undo: events.push_back({frame.time, UndoEvent{}}); break;
       case Command::redo: events.push_back({frame.time, RedoEvent{}}); break;
@@ -176,13 +227,8 @@ void GestureInterpreter::update_commands(const ControllerFrame& frame, std::vect
         mode_ = next_mode(mode_);
         events.push_back({frame.time, ModeEvent{mode_}});
         break;
-      case Command::delete_nearest:
-        if (hand.tracked && recordable(point))
-          events.push_back({frame.time, DeleteNearEvent{point, scaled_threshold(settings_.delete_radius, workspace_.scale)}});
-        break;
-      case Command::add_patch:
-        if (hand.tracked && recordable(point)) events.push_back({frame.time, AddPatchEvent{point}});
-        break;
+      case Command::delete_nearest: use_tool(Tool::erase, hand, frame.time, events); break;
+      case Command::add_patch: use_tool(Tool::patch, hand, frame.time, events); break;
       case Command::toggle_correction:
         correction_ = !correction_;
         events.push_back({frame.time, CorrectionEvent{correction_}});

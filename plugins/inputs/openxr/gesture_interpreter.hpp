@@ -2,7 +2,7 @@
 // Turns controller frames into session events: strokes drawn with the
 // draw button (its value as pressure), one-hand grab moving the workspace,
 // two-hand zoom scaling it about the dominant hand, and commands on button
-// presses.
+// presses; the hand menu (hand_menu.hpp) picked with the draw trigger.
 //
 // The workspace sits in the stage by a similarity x_stage = s R w + t
 // (Placement). Samples are the dominant hand's aim pose mapped into
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "controller_frame.hpp"
+#include "hand_menu.hpp"
 #include "sketchlab/event.hpp"
 #include "sketchlab/workspace.hpp"
 
@@ -24,6 +25,21 @@ struct Placement {
   double scale = 1.0;
   Vec3 to_stage(const Vec3& w) const { return scale * (rotation * w) + translation; }
   Vec3 to_workspace(const Vec3& x) const { return rotation.conjugate() * (x - translation) / scale; }
+};
+
+// What the draw trigger does (set from the hand menu): draw strokes, add a
+// patch at the tip, or delete the curve nearest the tip (CASSIE's
+// delete-nearest, radius delete_radius / s).
+enum class Tool { draw, patch, erase };
+
+// What the hand menu sets that is view state only (never recorded: every
+// stack sees every event, the viewer picks what to show).
+struct MenuView {
+  std::size_t stack = 0;     // index of the stack shown
+  bool compare = false;      // the next stack's curves overlaid on the shown one's
+  bool raw_strokes = true;   // raw strokes drawn faintly under the curves
+  bool rejected = false;     // constraint candidates the corrector rejected flashed too
+  bool operator==(const MenuView&) const = default;
 };
 
 class GestureInterpreter {
@@ -43,12 +59,25 @@ class GestureInterpreter {
   // Samples of the stroke being drawn (workspace), empty when not drawing.
   const std::vector<Sample>& stroke_in_progress() const { return samples_; }
 
+  // The hand menu (when settings.hand_menu). Items act on the draw trigger's
+  // rising edge while the dominant aim point is over them (both hands
+  // tracked, not drawing); the
+  // press is then used up until the trigger is released. `stacks` (>= 1) is
+  // how many stacks next_stack cycles through; compare needs two.
+  void set_stack_count(std::size_t stacks) { stack_count_ = stacks > 0 ? stacks : 1; }
+  Tool tool() const { return tool_; }
+  const MenuView& menu_view() const { return view_; }
+  // The item under the dominant aim point this frame (for highlighting).
+  std::optional<MenuItem> menu_hover() const { return hover_; }
+
  private:
   void update_grab(const ControllerFrame& frame, std::vector<Event>& events);
   void update_draw(const ControllerFrame& frame, std::vector<Event>& events);
   void update_commands(const ControllerFrame& frame, std::vector<Event>& events);
   void end_stroke(double time, std::vector<Event>& events);
   void end_zoom(double time, std::vector<Event>& events);
+  void pick(MenuItem item, double time, std::vector<Event>& events);
+  void use_tool(Tool tool, const HandFrame& hand, double time, std::vector<Event>& events);
 
   InputSettings settings_;
   Workspace workspace_;
@@ -70,6 +99,13 @@ class GestureInterpreter {
   Vec3 zoom_anchor_ = Vec3::Zero();  // workspace point kept under the dominant hand
   double zoom_start_scale_ = 1.0;
   std::array<bool, command_count> previous_buttons_{};
+
+  Tool tool_ = Tool::draw;
+  MenuView view_;
+  std::size_t stack_count_ = 1;
+  std::optional<MenuItem> hover_;
+  bool trigger_was_pressed_ = false;
+  bool trigger_used_ = false;  // this press picked an item or used a tool
 };
 
 }  // namespace sketchlab::openxr

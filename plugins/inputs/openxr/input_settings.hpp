@@ -31,6 +31,10 @@ struct InputSettings {
   double min_scale = 0.05, max_scale = 20.0;
   bool grab_rotates = true;      // one-hand grab moves and turns the workspace
   Layer initial_mode = Layer::automatic;
+  // The hand menu (hand_menu.hpp) is picked with the draw trigger. Not a
+  // parameter: the VR viewer, which draws the menu, turns it on; a headless
+  // recording shows nothing to pick.
+  bool hand_menu = false;
   // Controller polls per second of a headless session on a runtime without
   // frame timing there (Monado's XR_MND_headless), paced by the input itself.
   double headless_poll_hz = 90.0;

@@ -24,6 +24,10 @@ std::vector<ParamSpec> synthetic_param_specs() {
        "random seed: the same seed gives the same session byte for byte"},
       {"modality", ParamType::choice, std::string("vr"), {}, {}, {"vr", "tablet"}, "",
        "vr: 3D samples in metres at 90 Hz; tablet: pixels of a camera view"},
+      {"style", ParamType::choice, std::string("plain"), {}, {}, {"plain", "analytic", "justdrawit"}, "",
+       "plain: the model's curves only; analytic (tablet): construction scaffold, ground-plane "
+       "first stroke, guidelines toward the vanishing points and ticks, as in analytic drawing; "
+       "justdrawit (tablet): multi-stroke curves, then every curve oversketched from a second view"},
       real("noise", d.noise, 0.0, 10.0, "",
            "global scale of every error magnitude below (0: perfect strokes)"),
       real("vr_jitter", d.vr_noise.jitter, 0.0, 0.1, "m", "per-sample Gaussian noise, std per axis (tracking + tremor)"),
@@ -58,6 +62,10 @@ SynthesisParams synthesis_params(const Params& p) {
   s.size = p.real("size");
   s.seed = static_cast<std::uint64_t>(p.integer("seed"));
   s.modality = p.string("modality") == "tablet" ? Modality::tablet : Modality::vr;
+  const std::string style = p.string("style");
+  s.style = style == "analytic" ? DrawingStyle::analytic
+            : style == "justdrawit" ? DrawingStyle::justdrawit
+                                    : DrawingStyle::plain;
   s.noise = p.real("noise");
   s.vr_noise = {p.real("vr_jitter"),   p.real("vr_wobble"),           p.real("vr_wobble_wavelength"),
                 p.real("vr_depth_factor"), p.real("vr_overshoot"), p.real("vr_hook_probability"),

@@ -8,6 +8,7 @@
 #include "session_fixtures.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/run/metrics.hpp"
+#include "sketchlab/view.hpp"
 
 using namespace sketchlab;
 
@@ -37,4 +38,65 @@ TEST_CASE("input deviation of a long noisy stroke equals the brute-force distanc
   const CaseMetrics m = compute_metrics(result);
   CHECK(m.values.at("input_deviation_max_m") == Approx(max).margin(1e-12));
   CHECK(m.values.at("input_deviation_mean_m") == Approx(sum / double(samples.size())).margin(1e-12));
+}
+
+namespace {
+
+// Puts, for each 2D stroke, the intended curve of that stroke scaled by
+// `scale` about the stroke's camera eye: what a single view cannot tell from
+// the intended curve.
+class EyeScaledCorrector : public Corrector {
+ public:
+  EyeScaledCorrector(std::map<StrokeId, Curve> truth, double scale) : truth_(std::move(truth)), scale_(scale) {}
+  StrokeSpace stroke_space() const override { return StrokeSpace::pixels; }
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    Curve c = truth_.at(stroke.id);
+    const Vec3 eye = eye_position(*stroke.view);
+    for (Vec3& p : c.control_points) p = eye + scale_ * (p - eye);
+    NetworkCurve nc;
+    nc.id = sketch.network.next_curve_id();
+    nc.curve = c;
+    nc.source_stroke = stroke.id;
+    Correction out;
+    out.edit.curves_added.push_back(nc);
+    return out;
+  }
+
+ private:
+  std::map<StrokeId, Curve> truth_;
+  double scale_;
+};
+
+ReplayResult eye_scaled_case(double scale, bool second_eye) {
+  const std::map<StrokeId, Curve> truth{{1, make_line({0, 1, 0}, {0.3, 1, 0})},
+                                        {2, make_line({0.3, 1, 0}, {0.3, 1.3, 0.1})}};
+  ReplayResult r{"eye", RecordingHeader{}, Session(Workspace{}, std::make_shared<EyeScaledCorrector>(truth, scale), nullptr), {}};
+  for (const auto& [id, curve] : truth) {
+    View v;
+    const Vec3 eye = (second_eye && id == 2) ? Vec3(-0.8, 1.6, 0.9) : Vec3(0.6, 1.5, 1.0);
+    v.view = look_at(eye, {0.15, 1.1, 0}, Vec3::UnitY());
+    v.projection = perspective(0.6, 1.6, 0.01, 100.0);
+    v.viewport = Vec4(0, 0, 1600, 1000);
+    Stroke s = test::sampled_stroke(id, 3, double(id), 0.1, [](int i) { return Vec3(100.0 + 10 * i, 200.0, 0.0); });
+    s.view = v;
+    s.samples_are_pixels = true;
+    r.steps.push_back(r.session.handle(Event{double(id) + 0.5, StrokeEvent{s}}));
+    REQUIRE(r.steps.back().error.empty());
+    r.steps.push_back(r.session.handle(Event{double(id) + 0.5, ReferenceEvent{id, "ground_truth", curve}}));
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("the eye-scale alignment removes exactly the scale one view leaves open", "[metrics][ground_truth]") {
+  const CaseMetrics m = compute_metrics(eye_scaled_case(0.4, false));
+  CHECK(m.values.at("gt_distance_mean_m") > 0.1);
+  CHECK(m.values.at("gt_distance_max_aligned_eye_scale_m") < 1e-9);
+  CHECK(m.values.at("gt_eye_scale") == Approx(2.5).epsilon(1e-9));
+
+  // Two eye positions fix the scale: no aligned figure, the raw one stays.
+  const CaseMetrics two = compute_metrics(eye_scaled_case(0.4, true));
+  CHECK(two.values.count("gt_distance_mean_m") == 1);
+  CHECK(two.values.count("gt_distance_mean_aligned_eye_scale_m") == 0);
 }

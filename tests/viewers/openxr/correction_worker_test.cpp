@@ -34,6 +34,20 @@ class SlowCorrector : public test::FitCorrector {
   int ms_;
 };
 
+// The fit, reporting one enforced snap at the stroke's start.
+class SnappingCorrector : public test::FitCorrector {
+ public:
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    Correction c = FitCorrector::correct(stroke, sketch);
+    Constraint snap;
+    snap.kind = ConstraintKind::coincident_point;
+    snap.target = stroke.samples.front().position;
+    snap.enforced = true;
+    c.constraints.push_back(snap);
+    return c;
+  }
+};
+
 Event stroke_event(StrokeId id, double y) {
   const Stroke s = test::sampled_stroke(id, 10, 0.1 * id, 0.001, [&](int i) -> Vec3 { return Vec3(0.02 * i, y, 0.0); });
   return {0.1 * id + 0.01, StrokeEvent{s}};
@@ -41,29 +55,55 @@ Event stroke_event(StrokeId id, double y) {
 
 }  // namespace
 
-TEST_CASE("a slow corrector does not block submission; results appear when ready", "[openxr]") {
+TEST_CASE("a slow corrector does not block submission, and results appear when ready", "[openxr]") {
   const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_" + std::to_string(getpid()) + ".jsonl");
   auto live = std::make_unique<LiveSession>(RecordingHeader{},
                                             std::vector<StackInstance>{{"slow", std::make_shared<SlowCorrector>(300), nullptr}},
                                             rec, true);
-  vr::CorrectionWorker worker(std::move(live), 0);
+  vr::CorrectionWorker worker(std::move(live));
   const auto before = worker.latest();
   const auto t0 = std::chrono::steady_clock::now();
   for (StrokeId id = 1; id <= 3; ++id) worker.submit(stroke_event(id, 0.1 * id));
   const double submit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   CHECK(submit_ms < 100.0);  // three corrections take 900 ms
   CHECK(worker.latest()->version == before->version);  // nothing finished yet
-  CHECK(worker.latest()->sketch.network.curves().empty());
+  CHECK(worker.latest()->stacks.at(0).sketch.network.curves().empty());
   const auto final_snapshot = worker.finish();
   CHECK(final_snapshot->events == 3);
-  CHECK(final_snapshot->sketch.network.curves().size() == 3);
+  CHECK(final_snapshot->stacks.at(0).sketch.network.curves().size() == 3);
   CHECK(worker.problems().empty());
   // Recorded before corrected, in order: the file replays to the same sketch.
   const Recording recording = read_recording(rec);
   REQUIRE(recording.events.size() == 3);
   Session inline_session(Workspace{}, std::make_shared<SlowCorrector>(0), nullptr);
   for (const auto& e : recording.events) inline_session.handle(e);
-  CHECK(sketch_to_json(inline_session.sketch()) == sketch_to_json(final_snapshot->sketch));
+  CHECK(sketch_to_json(inline_session.sketch()) == sketch_to_json(final_snapshot->stacks.at(0).sketch));
+  fs::remove(rec);
+}
+
+TEST_CASE("snapshots carry every stack's sketch and what its corrector did with the latest stroke", "[openxr]") {
+  const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_two_" + std::to_string(getpid()) + ".jsonl");
+  auto live = std::make_unique<LiveSession>(
+      RecordingHeader{},
+      std::vector<StackInstance>{{"snap", std::make_shared<SnappingCorrector>(), nullptr},
+                                 {"fit", std::make_shared<SlowCorrector>(0), nullptr}},
+      rec, true);
+  vr::CorrectionWorker worker(std::move(live));
+  CHECK(worker.latest()->stacks.size() == 2);
+  CHECK(worker.latest()->strokes == 0);
+  worker.submit(stroke_event(1, 0.1));
+  worker.submit(stroke_event(2, 0.2));
+  worker.submit({1.0, UndoEvent{}});
+  const auto last = worker.finish();
+  REQUIRE(last->stacks.size() == 2);
+  CHECK(last->strokes == 2);
+  CHECK(last->stroke == StrokeId{2});
+  REQUIRE(last->stacks[0].constraints.size() == 1);
+  CHECK(last->stacks[0].constraints[0].enforced);
+  CHECK((last->stacks[0].constraints[0].target - Vec3(0.0, 0.2, 0.0)).norm() < 1e-12);
+  CHECK(last->stacks[1].constraints.empty());
+  CHECK(last->stacks[0].sketch.network.curves().size() == 1);  // the undo took stroke 2 back
+  CHECK(last->stacks[1].sketch.network.curves().size() == 1);
   fs::remove(rec);
 }
 
@@ -72,7 +112,7 @@ TEST_CASE("an event the recording refuses is reported, not fatal", "[openxr]") {
   auto live = std::make_unique<LiveSession>(RecordingHeader{},
                                             std::vector<StackInstance>{{"fast", std::make_shared<SlowCorrector>(0), nullptr}},
                                             rec, true);
-  vr::CorrectionWorker worker(std::move(live), 0);
+  vr::CorrectionWorker worker(std::move(live));
   worker.submit(stroke_event(1, 0.1));
   worker.submit({0.0, UndoEvent{}});  // earlier than the stroke: refused
   worker.submit({1.0, UndoEvent{}});

@@ -11,6 +11,7 @@
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/viewer/display.hpp"
+#include "sketchlab/viewer/viewer_stacks.hpp"
 
 namespace sketchlab::desktop {
 namespace {
@@ -24,17 +25,7 @@ std::vector<StackConfig> load_stacks(const ViewOptions& o) {
     freehand.corrector.plugin = "freehand";
     return {freehand};
   }
-  // An experiment names its stacks; a stack file is one stack.
-  try {
-    return load_experiment(o.config, overrides).stacks;
-  } catch (const ConfigError& experiment_error) {
-    try {
-      return {load_stack(o.config, overrides)};
-    } catch (const ConfigError& stack_error) {
-      throw ConfigError(std::string("not an experiment (") + experiment_error.what() +
-                        ") nor a stack (" + stack_error.what() + ")");
-    }
-  }
+  return viewer::load_viewer_stacks(o.config, overrides);
 }
 
 std::string utc_stamp() {

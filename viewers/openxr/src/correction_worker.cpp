@@ -4,14 +4,22 @@
 
 namespace sketchlab::vr {
 
-CorrectionWorker::CorrectionWorker(std::unique_ptr<LiveSession> live, std::size_t shown)
-    : live_(std::move(live)), shown_(shown) {
-  if (!live_ || shown_ >= live_->stack_count())
-    throw std::invalid_argument("CorrectionWorker: no session or no stack " + std::to_string(shown));
-  auto first = std::make_shared<SketchSnapshot>();
-  first->sketch = live_->session(shown_).sketch();
-  latest_ = first;
+CorrectionWorker::CorrectionWorker(std::unique_ptr<LiveSession> live) : live_(std::move(live)) {
+  if (!live_) throw std::invalid_argument("CorrectionWorker: no session");
+  constraints_.resize(live_->stack_count());
+  latest_ = snapshot(0);
   thread_ = std::thread([this] { run(); });
+}
+
+std::shared_ptr<const SketchSnapshot> CorrectionWorker::snapshot(std::uint64_t version) const {
+  auto snap = std::make_shared<SketchSnapshot>();
+  for (std::size_t i = 0; i < live_->stack_count(); ++i)
+    snap->stacks.push_back({live_->session(i).sketch(), constraints_[i]});
+  snap->stroke = stroke_;
+  snap->strokes = strokes_;
+  snap->events = live_->events_recorded();
+  snap->version = version;
+  return snap;
 }
 
 CorrectionWorker::~CorrectionWorker() {
@@ -64,10 +72,20 @@ void CorrectionWorker::run() {
       event = std::move(queue_.front());
       queue_.pop_front();
     }
+    // Counted whether or not the stroke is recorded: the viewer waits for
+    // this count to stop showing the stroke as pending.
+    if (const auto* s = std::get_if<StrokeEvent>(&event.payload)) {
+      for (auto& c : constraints_) c.clear();
+      stroke_ = s->stroke.id;
+      ++strokes_;
+    }
     std::string problem;
     try {
-      for (const StepReport& r : live_->handle(event))
+      const std::vector<StepReport> reports = live_->handle(event);
+      for (const StepReport& r : reports)
         if (!r.error.empty()) problem = r.event + " at " + std::to_string(event.time) + " s: " + r.error;
+      if (std::holds_alternative<StrokeEvent>(event.payload))
+        for (std::size_t i = 0; i < reports.size(); ++i) constraints_[i] = reports[i].constraints;
     } catch (const std::exception& e) {
       problem = std::string(event_type_name(event.payload)) + " at " + std::to_string(event.time) +
                 " s not recorded: " + e.what();
@@ -80,10 +98,7 @@ void CorrectionWorker::run() {
     }
     // Copying the sketch only when caught up keeps a backlog from growing.
     if (idle) {
-      auto snap = std::make_shared<SketchSnapshot>();
-      snap->sketch = live_->session(shown_).sketch();
-      snap->events = live_->events_recorded();
-      snap->version = ++version;
+      auto snap = snapshot(++version);
       std::lock_guard lock(mutex_);
       latest_ = std::move(snap);
     }

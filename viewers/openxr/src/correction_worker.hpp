@@ -11,6 +11,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -19,18 +20,27 @@
 
 namespace sketchlab::vr {
 
-// What the render thread draws: the shown stack's sketch after `events`
-// events.
-struct SketchSnapshot {
+// One stack's picture: its sketch and what its corrector considered for the
+// latest stroke (the StepReport's constraints, `enforced` telling which held;
+// empty when that stroke was not corrected).
+struct StackSnapshot {
   Sketch sketch;
+  std::vector<Constraint> constraints;
+};
+
+// What the render thread draws: every stack's sketch after `events` events.
+struct SketchSnapshot {
+  std::vector<StackSnapshot> stacks;  // in the session's stack order
+  std::optional<StrokeId> stroke;     // the latest stroke event handled
+  std::size_t strokes = 0;            // stroke events handled (a new one: a new correction to show)
   std::size_t events = 0;
   std::uint64_t version = 0;
 };
 
 class CorrectionWorker {
  public:
-  // Shows stack `shown` of `live` (must be < live->stack_count()).
-  CorrectionWorker(std::unique_ptr<LiveSession> live, std::size_t shown);
+  // Runs `live` (not null).
+  explicit CorrectionWorker(std::unique_ptr<LiveSession> live);
   ~CorrectionWorker();
   CorrectionWorker(const CorrectionWorker&) = delete;
   CorrectionWorker& operator=(const CorrectionWorker&) = delete;
@@ -47,8 +57,12 @@ class CorrectionWorker {
 
  private:
   void run();
+  std::shared_ptr<const SketchSnapshot> snapshot(std::uint64_t version) const;
   std::unique_ptr<LiveSession> live_;
-  std::size_t shown_;
+  // Worker thread only: the latest stroke's constraints per stack.
+  std::vector<std::vector<Constraint>> constraints_;
+  std::optional<StrokeId> stroke_;
+  std::size_t strokes_ = 0;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<Event> queue_;

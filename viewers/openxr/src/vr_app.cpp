@@ -15,6 +15,7 @@
 #include "sketchlab/run/stack.hpp"
 #include "sketchlab/run/stop_signals.hpp"
 #include "sketchlab/viewer/display.hpp"
+#include "sketchlab/viewer/viewer_stacks.hpp"
 #include "vr_scene.hpp"
 #include "xr_actions.hpp"
 #include "xr_render_session.hpp"
@@ -64,13 +65,21 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
            VrStats* stats) {
   std::vector<Override> overrides;
   for (const auto& o : options.overrides) overrides.push_back(parse_override(o));
-  const StackConfig stack = load_stack(options.config, overrides);
-  const openxr::InputSettings settings = input_settings(stack, err);
-  StackInstance instance = instantiate_stack(stack, host);
-  if (instance.corrector->stroke_space() == StrokeSpace::pixels)
-    err << "sketchlab vr: warning: " << stack.corrector.location.to_string() << ": corrector '"
-        << stack.corrector.plugin << "' corrects 2D (tablet) strokes only and will refuse every VR "
-        << "stroke; the strokes are still recorded\n";
+  // An experiment's stacks are switched and compared from the hand menu.
+  const std::vector<StackConfig> configs = viewer::load_viewer_stacks(options.config, overrides);
+  // The controllers are read as the first stack's input says.
+  openxr::InputSettings settings = input_settings(configs.front(), err);
+  settings.hand_menu = true;  // drawn on the other hand (hand_actors.hpp)
+  std::vector<StackInstance> instances;
+  std::vector<std::string> names;
+  for (const StackConfig& stack : configs) {
+    instances.push_back(instantiate_stack(stack, host));
+    names.push_back(stack.name);
+    if (instances.back().corrector->stroke_space() == StrokeSpace::pixels)
+      err << "sketchlab vr: warning: " << stack.corrector.location.to_string() << ": corrector '"
+          << stack.corrector.plugin << "' corrects 2D (tablet) strokes only and will refuse every VR "
+          << "stroke; the strokes are still recorded\n";
+  }
   if (!(options.grid_spacing >= 0.0 && options.grid_spacing < 100.0))
     throw std::invalid_argument("--grid: spacing must be in [0, 100) m, got " + std::to_string(options.grid_spacing));
   const std::filesystem::path recording = options.recording.empty() ? default_recording() : options.recording;
@@ -94,19 +103,20 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
     header.workspace.grid_spacing = options.grid_spacing;
   }
   header.workspace.mirror_enabled = options.mirror;
-  header.source = {{"input", "openxr"}, {"runtime", xr.runtime_name()}, {"stack", stack.name},
+  header.source = {{"input", "openxr"}, {"runtime", xr.runtime_name()}, {"stack", names.front()},
                    {"config", std::filesystem::absolute(options.config).string()}};
-  auto live = std::make_unique<LiveSession>(header, std::vector<StackInstance>{instance}, recording,
-                                            options.overwrite);
-  CorrectionWorker worker(std::move(live), 0);
+  auto live = std::make_unique<LiveSession>(header, std::move(instances), recording, options.overwrite);
+  CorrectionWorker worker(std::move(live));
   openxr::GestureInterpreter input(settings, header.workspace);
-  viewer::SceneStyle style;
-  style.multisamples = 0;
-  style.background = {0.93, 0.94, 0.96};
-  VrScene scene(eyes->renderer(), style);
-  std::uint64_t shown_version = 0;
+  input.set_stack_count(names.size());
+  VrScene scene(eyes->renderer(), vr_style(), names);
+  std::size_t shown_stack = 0;
+  bool comparing = false;
 
-  out << "sketchlab vr: drawing with stack '" << stack.name << "' on OpenXR runtime '" << xr.runtime_name()
+  std::string stack_list;
+  for (const auto& n : names) stack_list += (stack_list.empty() ? "'" : ", '") + n + "'";
+  out << "sketchlab vr: drawing with stack" << (names.size() > 1 ? "s " : " ") << stack_list << " on OpenXR runtime '"
+      << xr.runtime_name()
       << "', recording to " << recording.string() << " (Ctrl-C ends the session)\n"
       << std::flush;
   // Ctrl-C or SIGTERM asks the runtime to end the session, so the loop
@@ -134,13 +144,22 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
           seconds = static_cast<double>(time - start) * 1e-9;
           const openxr::ControllerFrame frame =
               actions.poll(xr.session(), xr.base_space(), xr.view_space(), time, seconds, xr.focused());
-          for (Event& e : input.step(frame)) worker.submit(std::move(e));
-          // The latest finished correction; a slow stack shows it late.
-          if (const auto snap = worker.latest(); snap->version != shown_version) {
-            shown_version = snap->version;
-            scene.set_sketch(snap->sketch);
+          for (Event& e : input.step(frame)) {
+            if (const auto* stroke = std::get_if<StrokeEvent>(&e.payload)) scene.stroke_submitted(stroke->stroke);
+            worker.submit(std::move(e));
           }
-          scene.update(input, frame, settings.dominant);
+          const openxr::MenuView& view = input.menu_view();
+          if (view.stack != shown_stack || view.compare != comparing) {
+            shown_stack = view.stack;
+            comparing = view.compare;
+            out << "sketchlab vr: showing stack '" << names[shown_stack] << "'"
+                << (comparing ? " with '" + names[(shown_stack + 1) % names.size()] + "' overlaid" : std::string())
+                << "\n"
+                << std::flush;
+          }
+          // The latest finished correction; a slow stack shows it late.
+          scene.show(*worker.latest(), view, seconds);
+          scene.update(input, frame, settings.dominant, seconds);
         },
         [&](int, const EyeView& view, std::uint32_t texture) {
           eyes->render(view.position, view.orientation, view.fov, texture);
@@ -156,7 +175,7 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   for (const auto& p : worker.problems()) err << "sketchlab vr: " << p << "\n";
   if (!options.sketch.empty()) {
     std::ofstream file(options.sketch);
-    file << sketch_to_json(final_sketch->sketch);
+    file << sketch_to_json(final_sketch->stacks.front().sketch);
     if (!file) throw std::runtime_error(options.sketch.string() + ": cannot write the sketch");
   }
   out << "sketchlab vr: " << worker.live().events_recorded() << " events recorded in " << recording.string()

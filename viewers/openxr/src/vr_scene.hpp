@@ -1,44 +1,58 @@
 #pragma once
 // The VR scene: the desktop viewer's sketch actors (viewers/scene: raw
-// strokes faint, curves, nodes, patches) placed in the stage by the
-// workspace placement, plus what only VR has: the stroke being drawn, the
-// controllers as small spheres in the current mode's colour (CASSIE), a
-// grid of points near the dominant hand and the mirror plane, each when the
-// workspace enables it.
+// strokes faint, curves, nodes, patches) for the shown stack, placed in the
+// stage by the workspace placement, with what only VR has: the workspace
+// (workspace_actors.hpp), the hands and the hand menu (hand_actors.hpp),
+// the feedback on each correction (correction_feedback.hpp) and, in compare
+// mode, the next stack's curves overlaid in `compare_colour`.
+//
+// In VR, curves are lit tubes (VTK's RenderLinesAsTubes: a shaded screen-
+// space tube, so curves read in depth at no geometry cost) and patches are
+// shaded (diffuse and specular), where the desktop draws them flat.
+#include <string>
 #include <vector>
 
-#include <vtkActor.h>
 #include <vtkRenderer.h>
-#include <vtkSmartPointer.h>
 
-#include "controller_frame.hpp"
-#include "gesture_interpreter.hpp"
+#include "correction_feedback.hpp"
+#include "correction_worker.hpp"
+#include "hand_actors.hpp"
 #include "scene_actors.hpp"
-#include "sketchlab/sketch.hpp"
+#include "workspace_actors.hpp"
 
 namespace sketchlab::vr {
 
-// Colour of the controller spheres by drawing mode (correction off: paler).
-viewer::Rgb mode_colour(Layer mode, bool correction);
+inline constexpr viewer::Rgb compare_colour{0.95, 0.50, 0.05};
+
+// The SceneStyle of the VR viewer: exact pixels (no multisampling, the
+// tests read them), curves a little wider than on the desktop.
+viewer::SceneStyle vr_style();
 
 class VrScene {
  public:
-  VrScene(vtkRenderer* renderer, const viewer::SceneStyle& style);
+  // `stack_names`: the session's stacks, in order (at least one).
+  VrScene(vtkRenderer* renderer, const viewer::SceneStyle& style, std::vector<std::string> stack_names);
 
-  // Replaces the sketch actors (called when a newer snapshot is ready).
-  void set_sketch(const Sketch& sketch);
-  // Per frame: placement of the workspace, the stroke being drawn, the
-  // controllers and the helpers.
+  // A stroke the input finished and submitted (shown until corrected).
+  void stroke_submitted(const Stroke& stroke);
+  // The latest snapshot of the worker; rebuilds the sketch actors when it
+  // or the menu's view changed, and starts the feedback for a new stroke.
+  void show(const SketchSnapshot& snapshot, const openxr::MenuView& view, double now);
+  // Per frame: placement, hands, menu, workspace, fades.
   void update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-              openxr::Hand dominant);
+              openxr::Hand dominant, double now);
 
  private:
-  void apply_placement(const openxr::Placement& placement);
+  void remove_sketch_actors();
   vtkRenderer* renderer_;
   viewer::SceneStyle style_;
-  viewer::SceneActors sketch_;
-  vtkSmartPointer<vtkActor> stroke_, grid_, mirror_;
-  vtkSmartPointer<vtkActor> hands_[2];
+  viewer::SceneActors sketch_, compare_;
+  WorkspaceActors workspace_;
+  HandActors hands_;
+  CorrectionFeedback feedback_;
+  std::uint64_t shown_version_ = ~std::uint64_t{0};
+  std::size_t shown_strokes_ = 0;
+  openxr::MenuView shown_view_;
 };
 
 }  // namespace sketchlab::vr

@@ -75,10 +75,10 @@ std::vector<Vec3> constraint_anchors(const Constraint& c, const Sketch& sketch) 
 }
 
 ConstraintMarkers make_constraint_markers(const std::vector<Constraint>& constraints,
-                                          const Sketch& sketch, double size) {
+                                          const Sketch& sketch, double size, bool rejected) {
   Builder dots, corners, tangents, planes;
   for (const Constraint& c : constraints) {
-    if (!c.enforced) continue;
+    if (c.enforced == rejected) continue;
     const std::vector<Vec3> anchors = constraint_anchors(c, sketch);
     if (anchors.empty()) continue;
     switch (c.kind) {
@@ -130,6 +130,9 @@ ConstraintMarkers make_constraint_markers(const std::vector<Constraint>& constra
       default: break;
     }
   }
+  if (rejected)
+    return {dots.actor(0.85, 0.15, 0.15, 0.8, 2.0), corners.actor(0.85, 0.15, 0.15, 0.8, 2.0),
+            tangents.actor(0.85, 0.15, 0.15, 0.8, 2.0), planes.actor(0.85, 0.15, 0.15, 0.25, 1.0)};
   return {dots.actor(0.10, 0.65, 0.25, 1.0, 3.0), corners.actor(0.80, 0.15, 0.70, 1.0, 2.5),
           tangents.actor(0.05, 0.65, 0.80, 1.0, 2.5), planes.actor(0.95, 0.75, 0.20, 0.35, 1.0)};
 }

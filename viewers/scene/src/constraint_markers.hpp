@@ -23,8 +23,11 @@ struct ConstraintMarkers {
 // references that exists in `sketch`, else its target for point-valued kinds.
 std::vector<Vec3> constraint_anchors(const Constraint& constraint, const Sketch& sketch);
 
-// Markers for the enforced constraints in `constraints`, sized `size` metres.
+// Markers for the enforced constraints in `constraints`, sized `size` metres;
+// with `rejected`, for the candidates the corrector considered and did not
+// enforce instead (CASSIE app, item 21: "rejected" are all but the applied
+// ones), every class in one red so they never read as applied.
 ConstraintMarkers make_constraint_markers(const std::vector<Constraint>& constraints,
-                                          const Sketch& sketch, double size);
+                                          const Sketch& sketch, double size, bool rejected = false);
 
 }  // namespace sketchlab::viewer

@@ -60,8 +60,11 @@ class PluginHost {
   explicit PluginHost(PluginLoadOptions options = PluginLoadOptions::from_environment())
       : options_(options) {}
 
-  // The build tree's plugin directory, the install tree's
-  // (<exe>/../lib/sketchlab/plugins), then each entry of SKETCHLAB_PLUGIN_PATH
+  // The plugin directory of the tree the kernel library belongs to
+  // (<libdir>/../lib/sketchlab/plugins: the build tree's, or the install
+  // tree's once installed, also for programs outside it such as python3),
+  // the one next to the executable (<exe>/../lib/sketchlab/plugins), then
+  // each entry of SKETCHLAB_PLUGIN_PATH
   // (colon-separated), existing directories only, without duplicates.
   static std::vector<std::filesystem::path> default_search_paths();
 

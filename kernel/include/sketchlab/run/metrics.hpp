@@ -41,7 +41,13 @@ struct PrecisionRecall {
 //   ref_<track>_snap_agreement, ref_<track>_compared: against a reference
 //     track (matching by source stroke)
 //   gt_distance_mean_m, gt_distance_max_m: output curves vs the intended
-//     ("ground_truth" track) curves
+//     ("ground_truth" track) curves, raw
+//   gt_distance_mean_aligned_eye_scale_m, gt_distance_max_aligned_eye_scale_m,
+//   gt_eye_scale: the same after the best uniform scaling of the output about
+//     the camera eye (gt_eye_scale = that factor), which leaves every pixel of
+//     the view unchanged: the depth/scale one view cannot determine. Present
+//     only when every compared stroke is a 2D stroke seen from one eye (with
+//     two or more eye positions the views fix the scale: use the raw figure)
 //   gt_<kind>_precision, gt_<kind>_recall: relations of the track's
 //     RelationEvents against those measured on the output over all pairs of
 //     live strokes (touching within distance_tolerance: coincident_point when

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "synthetic_params.hpp"
 #include "synthetic_test_support.hpp"
@@ -98,18 +99,26 @@ TEST_CASE("record and synth write the same file through the plugin", "[synthetic
 
 TEST_CASE("the bundled synthetic recordings regenerate byte for byte", "[synthetic][cli][data]") {
   const auto dir = scratch_dir();
-  // data/synthetic/*.jsonl are VR sessions, data/synthetic/tablet/*.jsonl 2D ones.
-  for (const std::string modality : {"vr", "tablet"}) {
-    for (const std::string model : {"cube", "mug"}) {
-      const std::string name = (modality == "vr" ? "" : modality + "/") + model + ".jsonl";
-      INFO(name);
-      const std::filesystem::path bundled = sketchlab::test::source_path("data/synthetic/" + name);
-      REQUIRE(std::filesystem::exists(bundled));
-      CHECK(std::filesystem::file_size(bundled) < 1000000);
-      const auto out = dir / (modality + "_" + model + ".jsonl");
-      REQUIRE(run_cli("synth " + model + " --modality " + modality + " --seed 1 -o \"" +
-                      out.string() + "\" --overwrite") == 0);
-      CHECK(slurp(out) == slurp(bundled));
-    }
+  // data/synthetic/*.jsonl are VR sessions, data/synthetic/tablet/*.jsonl 2D
+  // ones, MODEL_STYLE.jsonl drawn in the analytic (construction.hpp) and
+  // JustDrawIt (multi_view.hpp) styles.
+  struct Bundled {
+    std::string file, args;
+  };
+  std::vector<Bundled> bundled;
+  for (const std::string model : {"cube", "mug"}) bundled.push_back({model + ".jsonl", model});
+  for (const std::string model : {"cube", "mug", "chair", "lamp"}) {
+    bundled.push_back({"tablet/" + model + ".jsonl", model + " --modality tablet"});
+    for (const std::string style : {"analytic", "justdrawit"})
+      bundled.push_back({"tablet/" + model + "_" + style + ".jsonl", model + " --modality tablet --param style=" + style});
+  }
+  for (const Bundled& b : bundled) {
+    INFO(b.file);
+    const std::filesystem::path path = sketchlab::test::source_path("data/synthetic/" + b.file);
+    REQUIRE(std::filesystem::exists(path));
+    CHECK(std::filesystem::file_size(path) < 1000000);
+    const auto out = dir / std::filesystem::path(b.file).filename();
+    REQUIRE(run_cli("synth " + b.args + " --seed 1 -o \"" + out.string() + "\" --overwrite") == 0);
+    CHECK(slurp(out) == slurp(path));
   }
 }

@@ -13,11 +13,11 @@
 namespace sketchlab::vr {
 
 struct VrOptions {
-  std::filesystem::path config;         // stack file (YAML)
+  std::filesystem::path config;         // stack file, or experiment whose stacks all run (YAML)
   std::vector<std::string> overrides;   // "key.path=value"
   std::filesystem::path recording;      // empty: vr-<UTC timestamp>.jsonl
   bool overwrite = false;
-  std::filesystem::path sketch;         // optional: final sketch JSON of the stack
+  std::filesystem::path sketch;         // optional: final sketch JSON of the first stack
   // The session's starting workspace (recorded in the header): grid spacing
   // in metres (0: no grid) and the mirror plane x = 0.
   double grid_spacing = 0.0;

@@ -1,9 +1,9 @@
-#include "network_nodes.hpp"
+#include "sketchlab/network_nodes.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace sketchlab::scaffoldsketch {
+namespace sketchlab {
 namespace {
 
 void add_incidence(Node& node, CurveId curve, double t) {
@@ -28,12 +28,14 @@ Node* node_within(std::vector<Node>& nodes, const Vec3& p, double tolerance) {
 }  // namespace
 
 void connect_point(const Network& network, const Vec3& p, CurveId curve, double t,
-                   double tolerance, Edit& edit, NodeId& next_node) {
+                   double tolerance, Edit& edit, NodeId& next_node,
+                   const std::function<bool(CurveId)>& ignore) {
   if (!p.allFinite()) return;
   std::vector<CurveHit> hits = network.curves_near(p, tolerance);
   std::erase_if(hits, [&](const CurveHit& h) {
-    return h.curve == curve || std::find(edit.curves_removed.begin(), edit.curves_removed.end(),
-                                         h.curve) != edit.curves_removed.end();
+    return h.curve == curve || (ignore && ignore(h.curve)) ||
+           std::find(edit.curves_removed.begin(), edit.curves_removed.end(), h.curve) !=
+               edit.curves_removed.end();
   });
   if (hits.empty()) return;
 
@@ -57,4 +59,4 @@ void connect_point(const Network& network, const Vec3& p, CurveId curve, double 
   for (const CurveHit& h : hits) add_incidence(*node, h.curve, h.t);
 }
 
-}  // namespace sketchlab::scaffoldsketch
+}  // namespace sketchlab

@@ -1,0 +1,21 @@
+#pragma once
+// One stroke a synthetic person will draw: the 3D curve traced, its layer,
+// the intended curve it draws (index into the planned network; none for
+// construction aids such as guidelines and ticks) and the camera it is drawn
+// in (0: the tablet view, 1: the second view).
+#include <cstddef>
+#include <optional>
+
+#include "sketchlab/curve.hpp"
+#include "sketchlab/stroke.hpp"
+
+namespace sketchlab::synthetic {
+
+struct PlannedStroke {
+  Curve curve;
+  Layer layer = Layer::scaffold;
+  std::optional<std::size_t> intended;
+  int view = 0;
+};
+
+}  // namespace sketchlab::synthetic

@@ -1,0 +1,105 @@
+// The analytic corrector on the bundled analytic-style tablet sessions
+// (data/synthetic/tablet/MODEL_analytic.jsonl, `sketchlab synth MODEL
+// --modality tablet --param style=analytic --seed 1`): the 3D scaffold it
+// recovers after the alignment one view leaves open, the intended relations,
+// the nodes, next to the freehand baseline. The bounds are the figures
+// reached (README "Tablet sessions") with a small margin, so a regression
+// fails.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "cli_helpers.hpp"
+#include "sketchlab/io/text_file.hpp"
+#include "test_paths.hpp"
+
+namespace fs = std::filesystem;
+using namespace sketchlab;
+
+namespace {
+
+// metrics.json cases of `recordings` through the freehand and analytic stacks.
+std::map<std::pair<std::string, std::string>, nlohmann::json> run_tablet(const std::string& name,
+                                                                         const std::vector<fs::path>& recordings) {
+  const fs::path dir = test::fresh_dir(name);
+  const fs::path exp = dir / "exp.yaml";
+  std::ofstream out(exp);
+  out << "experiment: " << name << "\nrecordings:\n";
+  for (const auto& r : recordings) out << "  - " << r.string() << "\n";
+  out << "stacks:\n  - {name: freehand, corrector: {plugin: freehand}}\n"
+      << "  - {name: analytic, corrector: {plugin: analytic}}\n"
+      << "outputs: {dir: " << (dir / "runs").string()
+      << ", timestamp: false, report: true, ply: false, obj: false, mlp: false, pictures: false}\n";
+  out.close();
+  REQUIRE(test::run_cli("run " + exp.string(), dir / "run.txt") == 0);
+  const auto j = nlohmann::json::parse(read_text_file(dir / "runs" / name / "metrics.json"));
+  std::map<std::pair<std::string, std::string>, nlohmann::json> cases;
+  for (const auto& c : j["cases"]) cases[{c["recording"].get<std::string>(), c["stack"].get<std::string>()}] = c["metrics"];
+  return cases;
+}
+
+double get(const nlohmann::json& m, const std::string& key) {
+  INFO(key);
+  REQUIRE(m.contains(key));
+  return m[key].get<double>();
+}
+
+struct Figures {
+  double aligned_max;  // m, gt_distance_mean_aligned_eye_scale_m
+  double parallel_min, perpendicular_min, coincident_min;  // recall
+  double dangling_max;
+};
+
+}  // namespace
+
+TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet sessions", "[analytic][tablet][slow]") {
+  // Figures reached at seed 1, default noise (README), with a margin.
+  const std::map<std::string, Figures> expected{
+      {"cube_analytic", {0.0045, 0.80, 0.75, 0.80, 0.78}},
+      {"chair_analytic", {0.0027, 0.70, 0.70, 0.95, 0.72}},
+      {"mug_analytic", {0.0047, 0.95, 0.90, 0.95, 0.78}},
+      // Recovered worst (README): the shade is drawn from the arm end only.
+      {"lamp_analytic", {0.07, 0.70, 0.0, 0.78, 0.54}},
+  };
+  std::vector<fs::path> recordings;
+  for (const auto& [name, f] : expected) recordings.push_back(test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
+  const auto cases = run_tablet("analytic_tablet_figures", recordings);
+  for (const auto& [name, f] : expected) {
+    INFO(name);
+    const auto& a = cases.at({name, "analytic"});
+    const auto& freehand = cases.at({name, "freehand"});
+    const double aligned = get(a, "gt_distance_mean_aligned_eye_scale_m");
+    CHECK(aligned < f.aligned_max);
+    CHECK(get(a, "gt_parallel_recall") >= f.parallel_min);
+    CHECK(get(a, "gt_perpendicular_recall") >= f.perpendicular_min);
+    CHECK(get(a, "gt_coincident_point_recall") >= f.coincident_min);
+    // Nodes where the inferred curves meet (the baseline has none).
+    CHECK(get(a, "nodes") > 0);
+    CHECK(get(a, "dangling_endpoint_ratio") <= f.dangling_max);
+    CHECK(get(freehand, "dangling_endpoint_ratio") == 1.0);
+    WARN(name << ": analytic aligned " << aligned << " m, freehand aligned "
+              << get(freehand, "gt_distance_mean_aligned_eye_scale_m") << " m");
+  }
+}
+
+TEST_CASE("analytic is exact on noise-free analytic-style sessions of boxes and chairs", "[analytic][tablet][slow]") {
+  const fs::path dir = test::fresh_dir("analytic_tablet_exact_data");
+  std::vector<fs::path> recordings;
+  for (const std::string model : {"cube", "chair", "mug"}) {
+    const fs::path rec = dir / (model + ".jsonl");
+    REQUIRE(test::run_cli("synth " + model + " --modality tablet --param style=analytic --noise 0 -o " + rec.string(),
+                          dir / (model + ".txt")) == 0);
+    recordings.push_back(rec);
+  }
+  const auto cases = run_tablet("analytic_tablet_exact", recordings);
+  for (const std::string model : {"cube", "chair", "mug"}) {
+    INFO(model);
+    const auto& a = cases.at({model, "analytic"});
+    // The mug's handle has no tangent scaffold: close, not exact.
+    if (model == "mug") CHECK(get(a, "gt_distance_mean_aligned_eye_scale_m") < 2e-4);
+    else CHECK(get(a, "gt_distance_max_aligned_eye_scale_m") < 1e-9);
+    for (const char* kind : {"parallel", "perpendicular", "coincident_point"})
+      CHECK(get(a, std::string("gt_") + kind + "_recall") == 1.0);
+  }
+}

@@ -1,0 +1,148 @@
+// Analytic-drawing construction: the scaffold, the order and the guidelines
+// a trained user of Schmidt et al. 2009 draws.
+#include <catch2/catch.hpp>
+#include <set>
+
+#include "construction.hpp"
+#include "models.hpp"
+#include "relations.hpp"
+#include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/geometry/closest_point.hpp"
+#include "synthetic_test_support.hpp"
+
+using namespace sketchlab;
+using namespace sketchlab::synthetic;
+
+namespace {
+
+bool on_any(const std::vector<GroundTruthCurve>& curves, std::size_t count, const Vec3& p) {
+  for (std::size_t k = 0; k < count; ++k)
+    if (closest_point(curves[k].curve, p).distance <= 1e-9) return true;
+  return false;
+}
+
+int axis(const Vec3& d) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(std::abs(d.normalized()[k]) - 1.0) < 1e-12) return k;
+  return -1;
+}
+
+}  // namespace
+
+TEST_CASE("circles get their square, diagonals and cross; coaxial squares are joined", "[synthetic][construction]") {
+  const GroundTruthNetwork mug = make_mug(model_center, 0.3);
+  const GroundTruthNetwork net = with_construction_scaffold(mug);
+  // Rim and base: 4 sides + 2 diagonals + 2 diameters each, 4 box verticals;
+  // each circle is split into two open halves (2 more curves).
+  REQUIRE(net.curves.size() == mug.curves.size() + 22);
+  int scaffold = 0;
+  for (const auto& c : net.curves) {
+    CHECK_FALSE(c.curve.closed);
+    scaffold += c.layer == Layer::scaffold && c.curve.kind == CurveKind::line;
+  }
+  CHECK(scaffold == 20);
+  // Every circle joint is the end of a scaffold line (the cross), so curve
+  // inference finds it as a position constraint.
+  for (std::size_t c : {0u, 1u})
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 joint = evaluate(mug.curves[c].curve, k);
+      bool end = false;
+      for (std::size_t i = 0; i < net.curves.size(); ++i)
+        if (net.curves[i].layer == Layer::scaffold)
+          for (const Vec3& e : {net.curves[i].curve.control_points.front(), net.curves[i].curve.control_points.back()})
+          end = end || (e - joint).norm() < 1e-12;
+      CHECK(end);
+    }
+  // The lamp's slanted arm gets its axis path; the chair its footprint.
+  const GroundTruthNetwork lamp = with_construction_scaffold(make_lamp(model_center, 0.3));
+  const GroundTruthNetwork chair = with_construction_scaffold(make_chair(model_center, 0.3));
+  CHECK(chair.curves.size() == make_chair(model_center, 0.3).curves.size() + 4);
+  int lamp_diagonals = 0;
+  for (const auto& c : lamp.curves)
+    lamp_diagonals += c.curve.kind == CurveKind::line && axis(c.curve.control_points.back() - c.curve.control_points.front()) < 0;
+  // The arm, 4 shade sides, 2 diagonals per circle square (3 circles).
+  CHECK(lamp_diagonals == 1 + 4 + 6);
+  // Nothing is added twice: the lamp's own base diameters are its cross.
+  const Curve& diameter = make_lamp(model_center, 0.3).curves[1].curve;
+  int copies = 0;
+  for (const auto& c : lamp.curves)
+    copies += c.curve.kind == CurveKind::line &&
+              ((c.curve.control_points.front() - diameter.control_points.front()).norm() < 1e-12 ||
+               (c.curve.control_points.front() - diameter.control_points.back()).norm() < 1e-12) &&
+              ((c.curve.control_points.back() - diameter.control_points.front()).norm() < 1e-12 ||
+               (c.curve.control_points.back() - diameter.control_points.back()).norm() < 1e-12);
+  CHECK(copies == 1);
+}
+
+TEST_CASE("the analytic order starts in the ground plane and builds from known points", "[synthetic][construction]") {
+  for (const std::string model : {"cube", "mug", "chair", "lamp", "rounded_box"}) {
+    INFO(model);
+    const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_model(model, model_center, 0.3)));
+    REQUIRE(!plan.curves.empty());
+    double floor = 1e9;
+    for (const auto& c : plan.curves)
+      for (const Vec3& p : c.curve.control_points) floor = std::min(floor, p.y());
+    const Curve& first = plan.curves.front().curve;
+    CHECK(first.kind == CurveKind::line);
+    CHECK(axis(first.control_points.back() - first.control_points.front()) >= 0);
+    CHECK(std::abs(first.control_points.front().y() - floor) < 1e-12);
+    CHECK(std::abs(first.control_points.back().y() - floor) < 1e-12);
+    // Scaffold before shape; every later line starts on what is drawn (but
+    // the lamp's shade squares, which meet the drawing only at the arm end,
+    // in the middle of a side).
+    bool shape_seen = false;
+    for (std::size_t i = 1; i < plan.curves.size(); ++i) {
+      const GroundTruthCurve& c = plan.curves[i];
+      if (c.layer == Layer::shape) shape_seen = true;
+      else CHECK_FALSE(shape_seen);
+      if (c.curve.kind == CurveKind::line && model != "lamp") CHECK(on_any(plan.curves, i, c.curve.control_points.front()));
+    }
+  }
+}
+
+TEST_CASE("guidelines leave known vertices along the axis of an edge still to draw", "[synthetic][construction]") {
+  const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_cube(model_center, 0.3)));
+  const View camera = tablet_view(plan);
+  const Vec3 forward = (model_center - eye_position(camera)).normalized();
+  const auto strokes = with_guidelines(plan, camera);
+  std::set<std::size_t> intended;
+  std::vector<GroundTruthCurve> drawn;
+  int guides = 0;
+  for (const PlannedStroke& s : strokes) {
+    if (s.intended) {
+      CHECK(intended.insert(*s.intended).second);
+      CHECK(s.curve.control_points == plan.curves[*s.intended].curve.control_points);
+      drawn.push_back({s.curve, s.layer});
+      continue;
+    }
+    ++guides;
+    CHECK(s.layer == Layer::guide);
+    CHECK(axis(s.curve.control_points.back() - s.curve.control_points.front()) >= 0);
+    CHECK(on_any(drawn, drawn.size(), s.curve.control_points.front()));
+    // Toward the vanishing point: away from the eye along the axis.
+    CHECK((s.curve.control_points.back() - s.curve.control_points.front()).dot(forward) >= 0);
+  }
+  CHECK(intended.size() == plan.curves.size());
+  // A cube: 3 axes from each of its 8 corners, less the lines drawn already.
+  CHECK(guides > 0);
+  CHECK(guides < 24);
+}
+
+TEST_CASE("an analytic session has no ground truth for guidelines and refuses VR", "[synthetic][construction]") {
+  SynthesisParams p = support::perfect("mug", Modality::tablet);
+  p.style = DrawingStyle::analytic;
+  const Recording rec = synthesize_session(p);
+  std::set<StrokeId> guides, intended;
+  for (const auto& d : support::drawn(rec)) {
+    if (d.stroke.layer == Layer::guide) guides.insert(d.stroke.id);
+    else intended.insert(d.stroke.id);
+  }
+  CHECK(!guides.empty());
+  for (const Event& e : rec.events)
+    if (const auto* r = std::get_if<ReferenceEvent>(&e.payload)) CHECK(!guides.count(r->stroke));
+  for (const RelationEvent& r : support::relations(rec))
+    for (StrokeId s : r.strokes) CHECK(intended.count(s));
+  CHECK(rec.header.source.at("style") == "analytic");
+  p.modality = Modality::vr;
+  CHECK_THROWS_WITH(synthesize_session(p), Catch::Contains("modality=tablet"));
+}
