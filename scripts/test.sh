@@ -13,7 +13,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 case "${SANITIZE:-all}" in
   all)
-    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      LSAN_OPTIONS=suppressions=$root/tests/lsan.supp:print_suppressions=0
     build="$root/build-asan"
     "$root/scripts/build.sh" --sanitize ;;
   none)

@@ -28,6 +28,11 @@ void start_embedded() {
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&Py_IsInitialized), &info) != 0 && info.dli_fname)
     dlopen(info.dli_fname, RTLD_NOW | RTLD_GLOBAL | RTLD_NOLOAD);
+  // The interpreter is never finalised, so it outlives the host's unloading
+  // of this plugin while holding pybind11's state and functions in it: the
+  // plugin stays mapped (and LeakSanitizer can name it, tests/lsan.supp).
+  if (dladdr(reinterpret_cast<void*>(&start_embedded), &info) != 0 && info.dli_fname)
+    dlopen(info.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
 
   PyConfig config;
   PyConfig_InitPythonConfig(&config);
