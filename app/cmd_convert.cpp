@@ -6,7 +6,7 @@
 #include "sketchlab/io/mesh_export.hpp"
 #include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/io/text_file.hpp"
-#include "sketchlab/recording/cassie_import.hpp"
+#include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
 
 namespace sketchlab::cli {

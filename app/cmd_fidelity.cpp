@@ -13,9 +13,9 @@
 #include "commands.hpp"
 #include "plugin_arguments.hpp"
 #include "sketchlab/io/text_file.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/teacher_forced.hpp"
 
 namespace sketchlab::cli {
 namespace {

@@ -15,9 +15,9 @@
 
 #include "commands.hpp"
 #include "plugin_arguments.hpp"
+#include "sketchlab/lab/stop_signals.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
-#include "sketchlab/run/stop_signals.hpp"
 
 namespace sketchlab::cli {
 namespace {
@@ -69,9 +69,9 @@ std::size_t record(const std::string& input_name, const std::vector<std::string>
       stop_by = std::chrono::steady_clock::now() + stop_grace;
     }
     if (stop_by && std::chrono::steady_clock::now() > *stop_by) break;
-    auto event = input->next();
+    NextEvent event = input->next();
+    if (event.is_ended()) break;
     if (!event) {
-      if (input->finished()) continue;
       if (!live) {
         live = true;
         std::cerr << "sketchlab record: recording input '" << input_name << "' to " << output

@@ -10,7 +10,7 @@
 #include "plugin_arguments.hpp"
 #include "progress_line.hpp"
 #include "sketchlab/config/config.hpp"
-#include "sketchlab/run/experiment_runner.hpp"
+#include "sketchlab/lab/experiment_runner.hpp"
 #ifdef SKETCHLAB_HAVE_VIEWER
 #include "sketchlab/viewer/render_png.hpp"
 #endif

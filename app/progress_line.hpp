@@ -5,7 +5,7 @@
 // line is printed per finished case (logs stay readable).
 #include <ostream>
 
-#include "sketchlab/run/experiment_runner.hpp"
+#include "sketchlab/lab/experiment_runner.hpp"
 
 namespace sketchlab::cli {
 

@@ -13,7 +13,7 @@
 #include <ctime>
 #include <random>
 
-#include "sketchlab/run/metrics.hpp"
+#include "sketchlab/lab/metrics.hpp"
 #include "sketchlab/session.hpp"
 
 using namespace sketchlab;

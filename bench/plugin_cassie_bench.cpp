@@ -15,9 +15,9 @@
 #include <random>
 
 #include "cassie_corrector.hpp"
+#include "sketchlab/lab/distribution.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/distribution.hpp"
-#include "sketchlab/run/teacher_forced.hpp"
 #include "sketchlab/session.hpp"
 
 using namespace sketchlab;

@@ -29,17 +29,17 @@
 #include <string>
 #include <vector>
 
-#include "hermite_rbf_params.hpp"
 #include "curve_samples.hpp"
+#include "hermite_rbf_params.hpp"
 #include "hermite_rbf_surfacer.hpp"
 #include "mesh_topology.hpp"
 #include "point_tree.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/lab/stack.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/plugin/recording_input.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/stack.hpp"
 #include "stage_timer.hpp"
 #include "surface_quality.hpp"
 

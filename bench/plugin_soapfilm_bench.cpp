@@ -17,7 +17,7 @@
 #include "boundary_polyline.hpp"
 #include "patch_mesh.hpp"
 #include "patch_upkeep.hpp"
-#include "sketchlab/run/distribution.hpp"
+#include "sketchlab/lab/distribution.hpp"
 #include "soapfilm_surfacer.hpp"
 
 namespace {

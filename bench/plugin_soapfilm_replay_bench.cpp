@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "sketchlab/lab/cassie_import.hpp"
+#include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
-#include "sketchlab/recording/cassie_import.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/distribution.hpp"
 #include "sketchlab/session.hpp"
 #include "timed_soapfilm.hpp"
 
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
       s_wall.push_back(cost.wall_ms);
       s_cpu.push_back(cost.cpu_ms);
       for (const PatchMeshTimings& t : cost.meshed) mesh.push_back(t.fill_ms + t.remesh_ms + t.smooth_ms + t.output_ms);
-      strokes += r.event == "stroke";
+      strokes += r.event == EventKind::stroke;
       errors += !r.error.empty();
       patches += r.patches_added;
     }

@@ -1,4 +1,4 @@
-// libFuzzer harness: the CASSIE dataset importer (recording/cassie_import.hpp).
+// libFuzzer harness: the CASSIE dataset importer (sketchlab/lab/cassie_import.hpp).
 // The input is the sketch_history JSON, then a line "#raw#", then the
 // raw_data JSON (both halves are mutated). Contract: std::runtime_error
 // naming the file, or a recording; nothing else escapes, no undefined
@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "fuzz_support.hpp"
-#include "sketchlab/recording/cassie_import.hpp"
+#include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
 
 using namespace sketchlab;

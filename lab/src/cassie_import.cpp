@@ -1,4 +1,4 @@
-#include "sketchlab/recording/cassie_import.hpp"
+#include "sketchlab/lab/cassie_import.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <optional>
 #include <stdexcept>
 
-#include "json_codec.hpp"
 #include "sketchlab/curve.hpp"
 #include "sketchlab/event.hpp"
+#include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/stroke.hpp"
 
 namespace sketchlab {
@@ -24,7 +24,7 @@ using json = nlohmann::json;
 std::string num_text(double v) { return json(v).dump(); }
 
 // The limits of the recording format (event_json.hpp), as messages say them.
-static_assert(json_codec::max_time == 1e9 && json_codec::max_coordinate == 1e6);
+static_assert(recording_max_time == 1e9 && recording_max_coordinate == 1e6);
 constexpr const char* time_range = "[0, 1e9] s";
 constexpr const char* coordinate_range = "±1e6 m";
 
@@ -49,7 +49,7 @@ struct Source {
   // A time the recording format can hold: [0, 1e9] s (event_json.hpp).
   double time(const json& v, const std::string& where, const std::string& name) const {
     const double x = number(v, where, name);
-    if (x < 0.0 || x > json_codec::max_time) {
+    if (x < 0.0 || x > recording_max_time) {
       fail(where, "field '" + name + "' = " + num_text(x) + " s is outside " + time_range +
                       " (seconds since the session started)");
     }
@@ -66,7 +66,7 @@ struct Source {
             number(v[2], where, name + "[2]")};
   }
   // Coordinates the recording format can hold (|x| <= 1e6 m, event_json.hpp).
-  static bool in_range(const Vec3& p) { return p.cwiseAbs().maxCoeff() <= json_codec::max_coordinate; }
+  static bool in_range(const Vec3& p) { return p.cwiseAbs().maxCoeff() <= recording_max_coordinate; }
   Vec3 coordinate(const json& v, const std::string& where, const std::string& name) const {
     const Vec3 p = xyz_array(v, where, name);
     if (!in_range(p)) {

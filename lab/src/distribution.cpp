@@ -1,4 +1,4 @@
-#include "sketchlab/run/distribution.hpp"
+#include "sketchlab/lab/distribution.hpp"
 
 #include <algorithm>
 #include <cmath>

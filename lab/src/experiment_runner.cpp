@@ -1,19 +1,18 @@
-#include "sketchlab/run/experiment_runner.hpp"
+#include "sketchlab/lab/experiment_runner.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <ctime>
 #include <mutex>
-#include <set>
+#include <optional>
 #include <thread>
 
 #include "sketchlab/io/mesh_export.hpp"
 #include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/io/stroke_csv.hpp"
 #include "sketchlab/io/text_file.hpp"
-#include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/report.hpp"
+#include "sketchlab/lab/report.hpp"
+#include "sketchlab/lab/utc_timestamp.hpp"
 
 namespace sketchlab {
 namespace fs = std::filesystem;
@@ -23,15 +22,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-std::string utc_timestamp() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
-  return buf;
 }
 
 // Stack names become folder names: keep them readable but safe.
@@ -85,24 +75,23 @@ void write_meshlab_project(const fs::path& recording_dir, const std::vector<cons
   write_text_file(recording_dir / (recording_dir.filename().string() + ".mlp"), meshlab_project(layers));
 }
 
-void render_recording(const Renderer& renderer, const fs::path& recording,
-                      const fs::path& recording_dir, const std::vector<const CaseResult*>& cases) {
-  const Recording rec = read_recording(recording);
-  std::vector<Sketch> sketches;
-  std::vector<std::string> titles;
-  for (const CaseResult* c : cases) {
-    if (!c->ok) continue;
-    Sketch s = read_sketch_json(c->dir / "sketch.json");
-    std::set<StrokeId> live;
-    for (const auto& [id, curve] : s.network.curves()) live.insert(curve.source_stroke);
-    for (const auto& e : rec.events)
-      if (auto* se = std::get_if<StrokeEvent>(&e.payload); se && live.count(se->stroke.id))
-        s.strokes.emplace(se->stroke.id, se->stroke);
-    sketches.push_back(std::move(s));
-    titles.push_back(c->variant.stack.name);
-  }
+// What a picture shows of a case's final sketch: the workspace, the network
+// and the raw strokes that still have curves.
+Sketch pictured(const Sketch& sketch) {
+  Sketch s;
+  s.workspace = sketch.workspace;
+  s.network = sketch.network;
+  for (StrokeId id : strokes_with_curves(sketch)) s.strokes.emplace(id, sketch.strokes.at(id));
+  return s;
+}
+
+// `sketches[i]` belongs to `cases[i]` (empty when the case failed).
+void render_recording(const Renderer& renderer, const fs::path& recording_dir,
+                      const std::vector<const CaseResult*>& cases,
+                      const std::vector<const std::optional<Sketch>*>& sketches) {
   std::vector<std::pair<std::string, const Sketch*>> panels;
-  for (std::size_t i = 0; i < sketches.size(); ++i) panels.emplace_back(titles[i], &sketches[i]);
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    if (cases[i]->ok && *sketches[i]) panels.emplace_back(cases[i]->variant.stack.name, &**sketches[i]);
   if (!panels.empty()) renderer(recording_dir / "side_by_side.png", panels);
 }
 
@@ -131,6 +120,11 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
       summary.cases.push_back(std::move(c));
     }
 
+  // The final sketch of each case, kept for the pictures drawn per recording
+  // once every case has run.
+  const bool pictures = config.outputs.pictures && options.renderer;
+  std::vector<std::optional<Sketch>> final_sketches(summary.cases.size());
+
   std::mutex progress_mutex;
   std::size_t done = 0;
   auto report = [&](const std::string& label, bool finished) {
@@ -152,12 +146,13 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
         auto input = instantiate_input(c.variant.stack, host, c.recording);
         const ReplayResult r = replay(*input, stack);
         write_case_outputs(config.outputs, r, options.timings, c.dir);
+        if (pictures) final_sketches[i] = pictured(r.session.sketch());
         std::string header = "# recording: " + c.recording.string() + "\n";
         for (const auto& [path, value] : c.variant.point) header += "# sweep: " + path + " = " + value + "\n";
         write_text_file(c.dir / "case.yaml", header + stack_to_yaml(c.variant.stack));
         c.metrics = compute_metrics(r);
         for (const auto& s : r.steps)
-          if (s.event == "stroke" && s.corrected && s.error.empty())
+          if (s.event == EventKind::stroke && s.corrected && s.error.empty())
             c.stroke_latency_ms.push_back(options.timings ? s.latency_ms : 0.0);
         if (!options.timings)
           for (auto& [k, v] : c.metrics.values)
@@ -179,14 +174,18 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
 
   for (const auto& rec : config.recordings) {
     std::vector<const CaseResult*> cases;
-    for (const auto& c : summary.cases)
-      if (c.recording == rec) cases.push_back(&c);
+    std::vector<const std::optional<Sketch>*> sketches;
+    for (std::size_t i = 0; i < summary.cases.size(); ++i)
+      if (summary.cases[i].recording == rec) {
+        cases.push_back(&summary.cases[i]);
+        sketches.push_back(&final_sketches[i]);
+      }
     const fs::path dir = summary.run_dir / rec.stem();
     fs::create_directories(dir);
     if (config.outputs.mlp) write_meshlab_project(dir, cases);
-    if (config.outputs.pictures && options.renderer && config.outputs.sketch_json) {
+    if (pictures) {
       try {
-        render_recording(options.renderer, rec, dir, cases);
+        render_recording(options.renderer, dir, cases, sketches);
       } catch (const std::exception& e) {
         // A missing display must not lose the numbers: note it and go on.
         write_text_file(dir / "side_by_side.error.txt", std::string(e.what()) + "\n");

@@ -1,4 +1,4 @@
-#include "sketchlab/run/live_session.hpp"
+#include "sketchlab/lab/live_session.hpp"
 
 #include <stdexcept>
 

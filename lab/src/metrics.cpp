@@ -1,4 +1,4 @@
-#include "sketchlab/run/metrics.hpp"
+#include "sketchlab/lab/metrics.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -12,7 +12,7 @@
 #include "sketchlab/geometry/bounding_box.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/geometry/hausdorff.hpp"
-#include "sketchlab/run/distribution.hpp"
+#include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/view.hpp"
 
 namespace sketchlab {
@@ -85,7 +85,7 @@ void latency_metrics(const ReplayResult& r, CaseMetrics& m) {
   int refused = 0;
   for (const auto& s : r.steps) {
     refused += !s.error.empty();
-    if (s.event == "stroke" && s.corrected && s.error.empty()) latency.push_back(s.latency_ms);
+    if (s.event == EventKind::stroke && s.corrected && s.error.empty()) latency.push_back(s.latency_ms);
   }
   m.values["events_refused"] = refused;
   if (latency.empty()) return;

@@ -1,4 +1,4 @@
-#include "sketchlab/run/report.hpp"
+#include "sketchlab/lab/report.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,4 +1,4 @@
-#include "sketchlab/run/stack.hpp"
+#include "sketchlab/lab/stack.hpp"
 
 #include <stdexcept>
 
@@ -30,11 +30,14 @@ StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host
 std::shared_ptr<Input> instantiate_input(const StackConfig& stack, const PluginHost& host,
                                          const std::filesystem::path& recording) {
   PluginChoice choice;
-  choice.plugin = "replay";
+  choice.plugin = default_input_plugin;
   choice.location = stack.location;
   if (stack.input) choice = *stack.input;
-  if (choice.plugin == "replay") choice.params["path"] = recording.string();
   try {
+    // An input that plays files gets the recording (its descriptor names the
+    // parameter); others (synthetic, live) ignore it.
+    if (const LoadedPlugin* p = host.find(PluginKind::input, choice.plugin); p && !p->descriptor->recording_param.empty())
+      choice.params[p->descriptor->recording_param] = recording.string();
     return host.make_input(choice.plugin, choice.params);
   } catch (const ParamError& e) {
     rethrow_param_error(e, choice);
@@ -48,7 +51,10 @@ ReplayResult replay(Input& input, const StackInstance& stack) {
   ReplayResult result{stack.name, header, Session(header.workspace, stack.corrector, stack.surfacer, {},
                                                        stack.time_budget_s),
                       {}};
-  while (auto event = input.next()) result.steps.push_back(result.session.handle(*event));
+  // A live input has nothing ready now and then (it paces itself): only its
+  // end ends the replay.
+  for (NextEvent event = input.next(); !event.is_ended(); event = input.next())
+    if (event) result.steps.push_back(result.session.handle(*event));
   if (auto error = input.error(); !error.empty())
     throw std::runtime_error("input failed after " + std::to_string(result.steps.size()) +
                              " events: " + error);

@@ -1,4 +1,4 @@
-#include "sketchlab/run/stop_signals.hpp"
+#include "sketchlab/lab/stop_signals.hpp"
 
 #include <atomic>
 #include <csignal>

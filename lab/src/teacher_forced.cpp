@@ -1,4 +1,4 @@
-#include "sketchlab/run/teacher_forced.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,5 +1,5 @@
 """snap_ends in Python: the example C++ corrector (examples/plugin/
-snap_ends_corrector.cpp) written against the Python API; what the python
+snap_ends_plugin.cpp) written against the Python API; what the python
 corrector plugin runs by default:
 
     corrector: {plugin: python, params: {module: sketchlab.snap_ends,

@@ -4,12 +4,12 @@
 #include "bindings.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/lab/experiment_runner.hpp"
+#include "sketchlab/lab/live_session.hpp"
+#include "sketchlab/lab/metrics.hpp"
+#include "sketchlab/lab/stack.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/recording_input.hpp"
-#include "sketchlab/run/experiment_runner.hpp"
-#include "sketchlab/run/live_session.hpp"
-#include "sketchlab/run/metrics.hpp"
-#include "sketchlab/run/stack.hpp"
-#include "sketchlab/run/teacher_forced.hpp"
 
 namespace sketchlab::python {
 namespace {
@@ -71,7 +71,8 @@ void bind_stacks(py::module_& m) {
 
 void bind_sessions(py::module_& m) {
   py::class_<StepReport>(m, "StepReport")
-      .def_readonly("event", &StepReport::event)
+      .def_property_readonly("event", [](const StepReport& r) { return std::string(to_string(r.event)); },
+                             "the event's kind as recordings name it (\"stroke\", \"undo\", ...)")
       .def_readonly("time", &StepReport::time)
       .def_readonly("stroke", &StepReport::stroke)
       .def_readonly("latency_ms", &StepReport::latency_ms)

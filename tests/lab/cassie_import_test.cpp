@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "sketchlab/recording/cassie_import.hpp"
+#include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
 #include "test_paths.hpp"

@@ -1,6 +1,6 @@
 // A live session records every event before folding it, and its recording
 // replays to the same sketches.
-#include "sketchlab/run/live_session.hpp"
+#include "sketchlab/lab/live_session.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

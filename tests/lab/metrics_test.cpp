@@ -7,7 +7,7 @@
 
 #include "session_fixtures.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
-#include "sketchlab/run/metrics.hpp"
+#include "sketchlab/lab/metrics.hpp"
 #include "sketchlab/view.hpp"
 
 using namespace sketchlab;

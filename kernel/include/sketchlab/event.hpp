@@ -68,7 +68,15 @@ struct Event {
   bool operator==(const Event&) const = default;
 };
 
-// The event's type name as written in recordings ("stroke", "undo", ...).
+// The kind of an event: one per EventPayload alternative, in its order.
+enum class EventKind {
+  stroke, undo, redo, delete_near, delete_stroke, mode, workspace, correction,
+  add_patch, delete_patch, reference, relation, recompute_surface,
+};
+EventKind event_kind(const EventPayload& payload);
+// The kind's name as written in recordings and statistics ("stroke", "undo", ...).
+std::string_view to_string(EventKind kind);
+// to_string(event_kind(payload)).
 std::string_view event_type_name(const EventPayload& payload);
 
 // First line of a recording.

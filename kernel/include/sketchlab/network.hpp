@@ -115,6 +115,8 @@ class Network {
   bool operator==(const Network& other) const;
 
  private:
+  // The stages of apply() (network_apply.cpp), one private function per step.
+  friend class NetworkApplier;
   // Mutators keeping the reverse maps below in sync (apply and its rollback
   // are their only callers).
   void put_curve(const NetworkCurve& curve);

@@ -24,7 +24,7 @@ namespace sketchlab {
 
 // What handling one event did, for statistics and viewers.
 struct StepReport {
-  std::string event;               // event type name ("stroke", "undo", ...)
+  EventKind event = EventKind::stroke;
   double time = 0.0;               // event time (s)
   std::optional<StrokeId> stroke;  // for stroke events
   double latency_ms = 0.0;         // wall time of the corrector + surfacer (not deterministic)

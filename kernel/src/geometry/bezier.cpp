@@ -31,7 +31,7 @@ std::array<Vec3, 4> segment_points(const Curve& curve, int k) {
   return {p[i], p[i + 1], p[i + 2], p[i + 3]};
 }
 
-Vec3 bezier_point(const std::array<Vec3, 4>& p, double u) {
+std::pair<std::array<Vec3, 4>, std::array<Vec3, 4>> bezier_subdivide(const std::array<Vec3, 4>& p, double u) {
   // De Casteljau: numerically stable and exact at u = 0 and u = 1.
   const double v = 1.0 - u;
   const Vec3 a = v * p[0] + u * p[1];
@@ -39,8 +39,11 @@ Vec3 bezier_point(const std::array<Vec3, 4>& p, double u) {
   const Vec3 c = v * p[2] + u * p[3];
   const Vec3 d = v * a + u * b;
   const Vec3 e = v * b + u * c;
-  return v * d + u * e;
+  const Vec3 f = v * d + u * e;
+  return {{p[0], a, d, f}, {f, e, c, p[3]}};
 }
+
+Vec3 bezier_point(const std::array<Vec3, 4>& p, double u) { return bezier_subdivide(p, u).first[3]; }
 
 Vec3 bezier_derivative(const std::array<Vec3, 4>& p, double u) {
   const double v = 1.0 - u;

@@ -22,19 +22,6 @@ void require_curve(const Curve& curve, const char* where) {
   }
 }
 
-// De Casteljau subdivision of one cubic at u: left [0,u] and right [u,1].
-std::pair<std::array<Vec3, 4>, std::array<Vec3, 4>> subdivide(const std::array<Vec3, 4>& p,
-                                                               double u) {
-  const double v = 1.0 - u;
-  const Vec3 a = v * p[0] + u * p[1];
-  const Vec3 b = v * p[1] + u * p[2];
-  const Vec3 c = v * p[2] + u * p[3];
-  const Vec3 d = v * a + u * b;
-  const Vec3 e = v * b + u * c;
-  const Vec3 f = v * d + u * e;
-  return {{p[0], a, d, f}, {f, e, c, p[3]}};
-}
-
 // Nearest joint index if t is within kJointEps of one, else -1.
 int joint_at(double t) {
   const double r = std::round(t);
@@ -52,7 +39,7 @@ std::pair<Curve, int> insert_joint(const Curve& curve, double t) {
   const int j = joint_at(t);
   if (j >= 0) return {curve, j};
   const auto [k, u] = locate(curve, t);
-  const auto [l, r] = subdivide(segment_points(curve, k), u);
+  const auto [l, r] = bezier_subdivide(segment_points(curve, k), u);
   Curve out;
   out.kind = curve.kind;
   out.closed = curve.closed;

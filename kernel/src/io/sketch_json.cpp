@@ -184,7 +184,7 @@ std::string sketch_to_json(const Sketch& sketch, const std::vector<StepReport>* 
   ojson constraints = ojson::array();
   if (steps)
     for (const auto& step : *steps) {
-      if (!step.stroke || step.constraints.empty() || step.event != "stroke") continue;
+      if (!step.stroke || step.constraints.empty() || step.event != EventKind::stroke) continue;
       ojson list = ojson::array();
       for (const auto& c : step.constraints) list.push_back(constraint_to_json(c));
       constraints.push_back(ojson{{"stroke", *step.stroke}, {"constraints", list}});

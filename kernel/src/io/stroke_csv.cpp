@@ -48,7 +48,7 @@ std::string steps_to_csv(const std::vector<StepReport>& steps, bool timings) {
         ++enforced_total;
       }
     }
-    out << i << "," << s.time << "," << s.event << ",";
+    out << i << "," << s.time << "," << to_string(s.event) << ",";
     if (s.stroke) out << *s.stroke;
     out << "," << (timings ? s.latency_ms : 0.0) << "," << (s.corrected ? 1 : 0) << ","
         << s.stats.iterations << "," << s.stats.subsets_tried << "," << s.constraints.size() << ","

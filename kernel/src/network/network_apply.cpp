@@ -80,205 +80,242 @@ void check_patch_record(const Patch& patch, const std::string& at) {
 
 }  // namespace
 
-Edit Network::apply(const Edit& edit) {
-  if (!index_) index_ = std::make_unique<SpatialIndex>();
+// One application of an edit: the stages of Network::apply, in the step
+// order of edit.hpp, over the journal of first-seen states.
+class NetworkApplier {
+ public:
+  NetworkApplier(Network& net, const Edit& edit) : net_(net), edit_(edit), old_counters_(net.counters_) {}
 
-  // Journal: state of each touched item before this edit (nullopt: absent).
-  std::map<CurveId, std::optional<NetworkCurve>> old_curves;
-  std::map<NodeId, std::optional<Node>> old_nodes;
-  std::map<PatchId, std::optional<Patch>> old_patches;
-  const IdCounters old_counters = counters_;
-  // Where each explicitly given node / patch came from, for error messages.
-  std::map<NodeId, std::string> node_origin;
-  std::map<PatchId, std::string> patch_origin;
-  std::map<CurveId, std::string> curve_origin;
+  Edit run() {
+    if (!net_.index_) net_.index_ = std::make_unique<SpatialIndex>();
+    try {
+      remove_patches();   // 1
+      remove_nodes();     // 2
+      remove_curves();    // 3
+      replace_curves();   // 4
+      add_curves();       // 5
+      replace_nodes();    // 6
+      add_nodes();        // 7
+      add_patches();      // 8
+      check_touched();
+      update_counters();
+      reindex();
+    } catch (...) {
+      roll_back();
+      throw;
+    }
+    return inverse();
+  }
 
-  auto touch_curve = [&](CurveId id) {
-    if (old_curves.count(id)) return;
-    const NetworkCurve* c = find_curve(id);
-    old_curves.emplace(id, c ? std::optional<NetworkCurve>(*c) : std::nullopt);
-  };
-  auto touch_node = [&](NodeId id) {
-    if (old_nodes.count(id)) return;
-    const Node* n = find_node(id);
-    old_nodes.emplace(id, n ? std::optional<Node>(*n) : std::nullopt);
-  };
-  auto touch_patch = [&](PatchId id) {
-    if (old_patches.count(id)) return;
-    auto it = patches_.find(id);
-    old_patches.emplace(id, it == patches_.end() ? std::nullopt : std::optional<Patch>(it->second));
-  };
-  bool index_touched = false;
+ private:
+  void touch_curve(CurveId id) {
+    if (old_curves_.count(id)) return;
+    const NetworkCurve* c = net_.find_curve(id);
+    old_curves_.emplace(id, c ? std::optional<NetworkCurve>(*c) : std::nullopt);
+  }
+  void touch_node(NodeId id) {
+    if (old_nodes_.count(id)) return;
+    const Node* n = net_.find_node(id);
+    old_nodes_.emplace(id, n ? std::optional<Node>(*n) : std::nullopt);
+  }
+  void touch_patch(PatchId id) {
+    if (old_patches_.count(id)) return;
+    auto it = net_.patches_.find(id);
+    old_patches_.emplace(id, it == net_.patches_.end() ? std::nullopt : std::optional<Patch>(it->second));
+  }
 
-  try {
-    // 1. Patches removed.
-    for (std::size_t i = 0; i < edit.patches_removed.size(); ++i) {
-      const PatchId id = edit.patches_removed[i];
-      if (!patches_.count(id))
+  void remove_patches() {
+    for (std::size_t i = 0; i < edit_.patches_removed.size(); ++i) {
+      const PatchId id = edit_.patches_removed[i];
+      if (!net_.patches_.count(id))
         fail(where("patches_removed", i) + ": patch " + std::to_string(id) +
-             (old_patches.count(id) ? " is listed twice" : " does not exist"));
+             (old_patches_.count(id) ? " is listed twice" : " does not exist"));
       touch_patch(id);
-      erase_patch(id);
+      net_.erase_patch(id);
     }
-    // 2. Nodes removed.
-    for (std::size_t i = 0; i < edit.nodes_removed.size(); ++i) {
-      const NodeId id = edit.nodes_removed[i];
-      if (!nodes_.count(id))
+  }
+
+  void remove_nodes() {
+    for (std::size_t i = 0; i < edit_.nodes_removed.size(); ++i) {
+      const NodeId id = edit_.nodes_removed[i];
+      if (!net_.nodes_.count(id))
         fail(where("nodes_removed", i) + ": node " + std::to_string(id) +
-             (old_nodes.count(id) ? " is listed twice" : " does not exist"));
+             (old_nodes_.count(id) ? " is listed twice" : " does not exist"));
       touch_node(id);
-      erase_node(id);
+      net_.erase_node(id);
     }
-    // 3. Curves removed, with their incidences, orphaned nodes and patches.
-    for (std::size_t i = 0; i < edit.curves_removed.size(); ++i) {
-      const CurveId id = edit.curves_removed[i];
-      if (!curves_.count(id))
+  }
+
+  // With their incidences, the nodes they orphan and the patches on them.
+  void remove_curves() {
+    for (std::size_t i = 0; i < edit_.curves_removed.size(); ++i) {
+      const CurveId id = edit_.curves_removed[i];
+      if (!net_.curves_.count(id))
         fail(where("curves_removed", i) + ": curve " + std::to_string(id) +
-             (old_curves.count(id) ? " is listed twice" : " does not exist"));
-      if (auto it = nodes_on_curve_.find(id); it != nodes_on_curve_.end()) {
+             (old_curves_.count(id) ? " is listed twice" : " does not exist"));
+      if (auto it = net_.nodes_on_curve_.find(id); it != net_.nodes_on_curve_.end()) {
         const std::set<NodeId> on_curve = it->second;
         for (NodeId n : on_curve) {
           touch_node(n);
-          Node node = nodes_.at(n);
+          Node node = net_.nodes_.at(n);
           std::erase_if(node.incidences, [&](const NodeIncidence& inc) { return inc.curve == id; });
           if (node.incidences.empty())
-            erase_node(n);
+            net_.erase_node(n);
           else
-            put_node(node);
+            net_.put_node(node);
         }
       }
-      if (auto it = patches_on_curve_.find(id); it != patches_on_curve_.end()) {
+      if (auto it = net_.patches_on_curve_.find(id); it != net_.patches_on_curve_.end()) {
         const std::set<PatchId> on_curve = it->second;
         for (PatchId p : on_curve) {
           touch_patch(p);
-          erase_patch(p);
+          net_.erase_patch(p);
         }
       }
       touch_curve(id);
-      erase_curve(id);
+      net_.erase_curve(id);
     }
-    // 4. Curves replaced.
-    for (std::size_t i = 0; i < edit.curves_replaced.size(); ++i) {
-      const NetworkCurve& nc = edit.curves_replaced[i];
+  }
+
+  void replace_curves() {
+    for (std::size_t i = 0; i < edit_.curves_replaced.size(); ++i) {
+      const NetworkCurve& nc = edit_.curves_replaced[i];
       const std::string at = where("curves_replaced", i);
-      if (nc.id != 0 && !curves_.count(nc.id))
+      if (nc.id != 0 && !net_.curves_.count(nc.id))
         fail(at + ": curve " + std::to_string(nc.id) + " does not exist");
       check_curve(nc, at);
-      if (curve_origin.count(nc.id)) fail(at + ": curve " + std::to_string(nc.id) + " is listed twice");
-      curve_origin[nc.id] = at;
+      if (curve_origin_.count(nc.id)) fail(at + ": curve " + std::to_string(nc.id) + " is listed twice");
+      curve_origin_[nc.id] = at;
       touch_curve(nc.id);
-      put_curve(nc);
+      net_.put_curve(nc);
     }
-    // 5. Curves added.
-    for (std::size_t i = 0; i < edit.curves_added.size(); ++i) {
-      const NetworkCurve& nc = edit.curves_added[i];
+  }
+
+  void add_curves() {
+    for (std::size_t i = 0; i < edit_.curves_added.size(); ++i) {
+      const NetworkCurve& nc = edit_.curves_added[i];
       const std::string at = where("curves_added", i);
       check_curve(nc, at);
-      if (curves_.count(nc.id)) fail(at + ": curve " + std::to_string(nc.id) + " already exists");
-      curve_origin[nc.id] = at;
+      if (net_.curves_.count(nc.id)) fail(at + ": curve " + std::to_string(nc.id) + " already exists");
+      curve_origin_[nc.id] = at;
       touch_curve(nc.id);
-      put_curve(nc);
+      net_.put_curve(nc);
     }
-    // 6. Nodes replaced.
-    for (std::size_t i = 0; i < edit.nodes_replaced.size(); ++i) {
-      const Node& node = edit.nodes_replaced[i];
+  }
+
+  void replace_nodes() {
+    for (std::size_t i = 0; i < edit_.nodes_replaced.size(); ++i) {
+      const Node& node = edit_.nodes_replaced[i];
       const std::string at = where("nodes_replaced", i);
-      if (node.id != 0 && !nodes_.count(node.id))
+      if (node.id != 0 && !net_.nodes_.count(node.id))
         fail(at + ": node " + std::to_string(node.id) + " does not exist");
       check_node_record(node, at);
-      if (node_origin.count(node.id)) fail(at + ": node " + std::to_string(node.id) + " is listed twice");
-      node_origin[node.id] = at;
+      if (node_origin_.count(node.id)) fail(at + ": node " + std::to_string(node.id) + " is listed twice");
+      node_origin_[node.id] = at;
       touch_node(node.id);
-      put_node(node);
+      net_.put_node(node);
     }
-    // 7. Nodes added.
-    for (std::size_t i = 0; i < edit.nodes_added.size(); ++i) {
-      const Node& node = edit.nodes_added[i];
+  }
+
+  void add_nodes() {
+    for (std::size_t i = 0; i < edit_.nodes_added.size(); ++i) {
+      const Node& node = edit_.nodes_added[i];
       const std::string at = where("nodes_added", i);
       check_node_record(node, at);
-      if (nodes_.count(node.id)) fail(at + ": node " + std::to_string(node.id) + " already exists");
-      node_origin[node.id] = at;
+      if (net_.nodes_.count(node.id)) fail(at + ": node " + std::to_string(node.id) + " already exists");
+      node_origin_[node.id] = at;
       touch_node(node.id);
-      put_node(node);
+      net_.put_node(node);
     }
-    // 8. Patches added.
-    for (std::size_t i = 0; i < edit.patches_added.size(); ++i) {
-      const Patch& patch = edit.patches_added[i];
+  }
+
+  void add_patches() {
+    for (std::size_t i = 0; i < edit_.patches_added.size(); ++i) {
+      const Patch& patch = edit_.patches_added[i];
       const std::string at = where("patches_added", i);
       check_patch_record(patch, at);
-      if (patches_.count(patch.id)) fail(at + ": patch " + std::to_string(patch.id) + " already exists");
-      patch_origin[patch.id] = at;
+      if (net_.patches_.count(patch.id)) fail(at + ": patch " + std::to_string(patch.id) + " already exists");
+      patch_origin_[patch.id] = at;
       touch_patch(patch.id);
-      put_patch(patch);
+      net_.put_patch(patch);
     }
+  }
 
-    // Invariants of the result, checked on what this edit could have broken:
-    // incidences and boundaries of touched nodes and patches, and those lying
-    // on touched curves (a replacement may shorten a curve).
-    // `at` names the edit field (and item) to blame.
-    auto check_incidence = [&](const NodeIncidence& inc, const std::string& at) {
-      const NetworkCurve* c = find_curve(inc.curve);
-      if (!c) fail(at + ": incidence on curve " + std::to_string(inc.curve) + ", which does not exist");
-      if (!in_range(inc.t, c->curve.t_max()))
-        fail(at + ": incidence on curve " + std::to_string(inc.curve) + " at t = " + num(inc.t) +
-             " is outside [0, " + num(c->curve.t_max()) + "]");
-    };
-    auto check_boundary = [&](const OrientedSegment& s, const std::string& at) {
-      const NetworkCurve* c = find_curve(s.curve);
-      if (!c) fail(at + ": boundary uses curve " + std::to_string(s.curve) + ", which does not exist");
-      if (!in_range(s.t_from, c->curve.t_max()) || !in_range(s.t_to, c->curve.t_max()))
-        fail(at + ": boundary piece [" + num(s.t_from) + ", " + num(s.t_to) + "] on curve " +
-             std::to_string(s.curve) + " is outside [0, " + num(c->curve.t_max()) + "]");
-    };
-    for (const auto& [id, at] : node_origin)
-      for (const NodeIncidence& inc : nodes_.at(id).incidences)
+  // `at` names the edit field (and item) to blame.
+  void check_incidence(const NodeIncidence& inc, const std::string& at) const {
+    const NetworkCurve* c = net_.find_curve(inc.curve);
+    if (!c) fail(at + ": incidence on curve " + std::to_string(inc.curve) + ", which does not exist");
+    if (!in_range(inc.t, c->curve.t_max()))
+      fail(at + ": incidence on curve " + std::to_string(inc.curve) + " at t = " + num(inc.t) +
+           " is outside [0, " + num(c->curve.t_max()) + "]");
+  }
+  void check_boundary(const OrientedSegment& s, const std::string& at) const {
+    const NetworkCurve* c = net_.find_curve(s.curve);
+    if (!c) fail(at + ": boundary uses curve " + std::to_string(s.curve) + ", which does not exist");
+    if (!in_range(s.t_from, c->curve.t_max()) || !in_range(s.t_to, c->curve.t_max()))
+      fail(at + ": boundary piece [" + num(s.t_from) + ", " + num(s.t_to) + "] on curve " +
+           std::to_string(s.curve) + " is outside [0, " + num(c->curve.t_max()) + "]");
+  }
+
+  // Invariants of the result, checked on what this edit could have broken:
+  // incidences and boundaries of touched nodes and patches, and those lying
+  // on touched curves (a replacement may shorten a curve).
+  void check_touched() const {
+    for (const auto& [id, at] : node_origin_)
+      for (const NodeIncidence& inc : net_.nodes_.at(id).incidences)
         check_incidence(inc, at + " (node " + std::to_string(id) + ")");
-    for (const auto& [id, at] : patch_origin)
-      for (const OrientedSegment& s : patches_.at(id).boundary)
+    for (const auto& [id, at] : patch_origin_)
+      for (const OrientedSegment& s : net_.patches_.at(id).boundary)
         check_boundary(s, at + " (patch " + std::to_string(id) + ")");
-    for (const auto& [cid, at] : curve_origin) {
+    for (const auto& [cid, at] : curve_origin_) {
       const std::string blame = at + " (curve " + std::to_string(cid) + ") leaves ";
-      if (auto it = nodes_on_curve_.find(cid); it != nodes_on_curve_.end())
+      if (auto it = net_.nodes_on_curve_.find(cid); it != net_.nodes_on_curve_.end())
         for (NodeId n : it->second)
-          for (const NodeIncidence& inc : nodes_.at(n).incidences)
+          for (const NodeIncidence& inc : net_.nodes_.at(n).incidences)
             if (inc.curve == cid) check_incidence(inc, blame + "node " + std::to_string(n) + " invalid");
-      if (auto it = patches_on_curve_.find(cid); it != patches_on_curve_.end())
+      if (auto it = net_.patches_on_curve_.find(cid); it != net_.patches_on_curve_.end())
         for (PatchId p : it->second)
-          for (const OrientedSegment& s : patches_.at(p).boundary)
+          for (const OrientedSegment& s : net_.patches_.at(p).boundary)
             if (s.curve == cid) check_boundary(s, blame + "patch " + std::to_string(p) + " invalid");
     }
+  }
 
-    // Counters: restored verbatim by inverse edits, else advanced past every
-    // id added.
-    if (edit.counters) {
-      const IdCounters& c = *edit.counters;
-      if (!curves_.empty() && curves_.rbegin()->first >= c.next_curve)
+  // Restored verbatim by inverse edits, else advanced past every id added.
+  void update_counters() {
+    if (edit_.counters) {
+      const IdCounters& c = *edit_.counters;
+      if (!net_.curves_.empty() && net_.curves_.rbegin()->first >= c.next_curve)
         fail("counters.next_curve = " + std::to_string(c.next_curve) + " is not above curve " +
-             std::to_string(curves_.rbegin()->first));
-      if (!nodes_.empty() && nodes_.rbegin()->first >= c.next_node)
+             std::to_string(net_.curves_.rbegin()->first));
+      if (!net_.nodes_.empty() && net_.nodes_.rbegin()->first >= c.next_node)
         fail("counters.next_node = " + std::to_string(c.next_node) + " is not above node " +
-             std::to_string(nodes_.rbegin()->first));
-      if (!patches_.empty() && patches_.rbegin()->first >= c.next_patch)
+             std::to_string(net_.nodes_.rbegin()->first));
+      if (!net_.patches_.empty() && net_.patches_.rbegin()->first >= c.next_patch)
         fail("counters.next_patch = " + std::to_string(c.next_patch) + " is not above patch " +
-             std::to_string(patches_.rbegin()->first));
-      counters_ = c;
+             std::to_string(net_.patches_.rbegin()->first));
+      net_.counters_ = c;
     } else {
-      for (const NetworkCurve& c : edit.curves_added) counters_.next_curve = std::max(counters_.next_curve, c.id + 1);
-      for (const Node& n : edit.nodes_added) counters_.next_node = std::max(counters_.next_node, n.id + 1);
-      for (const Patch& p : edit.patches_added) counters_.next_patch = std::max(counters_.next_patch, p.id + 1);
+      IdCounters& k = net_.counters_;
+      for (const NetworkCurve& c : edit_.curves_added) k.next_curve = std::max(k.next_curve, c.id + 1);
+      for (const Node& n : edit_.nodes_added) k.next_node = std::max(k.next_node, n.id + 1);
+      for (const Patch& p : edit_.patches_added) k.next_patch = std::max(k.next_patch, p.id + 1);
     }
+  }
 
-    index_touched = true;
-    for (const auto& [id, old] : old_curves) index_curve(id, old);
-    for (const auto& [id, old] : old_nodes) index_node(id, old);
-    if (index_->needs_rebuild()) index_->rebuild(curves_, nodes_);
-  } catch (...) {
-    for (const auto& [id, old] : old_patches) old ? put_patch(*old) : erase_patch(id);
-    for (const auto& [id, old] : old_nodes) old ? put_node(*old) : erase_node(id);
-    for (const auto& [id, old] : old_curves) old ? put_curve(*old) : erase_curve(id);
-    counters_ = old_counters;
-    if (index_touched) index_->rebuild(curves_, nodes_);
-    throw;
+  void reindex() {
+    index_touched_ = true;
+    for (const auto& [id, old] : old_curves_) net_.index_curve(id, old);
+    for (const auto& [id, old] : old_nodes_) net_.index_node(id, old);
+    if (net_.index_->needs_rebuild()) net_.index_->rebuild(net_.curves_, net_.nodes_);
+  }
+
+  // The strong guarantee: every journaled item back as it was.
+  void roll_back() {
+    for (const auto& [id, old] : old_patches_) old ? net_.put_patch(*old) : net_.erase_patch(id);
+    for (const auto& [id, old] : old_nodes_) old ? net_.put_node(*old) : net_.erase_node(id);
+    for (const auto& [id, old] : old_curves_) old ? net_.put_curve(*old) : net_.erase_curve(id);
+    net_.counters_ = old_counters_;
+    if (index_touched_) net_.index_->rebuild(net_.curves_, net_.nodes_);
   }
 
   // The inverse, in the same step order, applied to the new state:
@@ -287,47 +324,64 @@ Edit Network::apply(const Edit& edit) {
   //  changed/new nodes and patches can reference them, and those are handled
   //  explicitly);  4-5. restore replaced and removed curves;  6-7. restore
   //  changed and removed nodes;  8. restore changed and removed patches.
-  Edit inverse;
-  inverse.counters = old_counters;
-  std::set<CurveId> new_curves;
-  for (const auto& [id, old] : old_curves) {
-    const NetworkCurve* now = find_curve(id);
-    if (!old && now) {
-      inverse.curves_removed.push_back(id);
-      new_curves.insert(id);
-    } else if (old && now && *old != *now) {
-      inverse.curves_replaced.push_back(*old);
-    } else if (old && !now) {
-      inverse.curves_added.push_back(*old);
+  Edit inverse() const {
+    Edit inverse;
+    inverse.counters = old_counters_;
+    std::set<CurveId> new_curves;
+    for (const auto& [id, old] : old_curves_) {
+      const NetworkCurve* now = net_.find_curve(id);
+      if (!old && now) {
+        inverse.curves_removed.push_back(id);
+        new_curves.insert(id);
+      } else if (old && now && *old != *now) {
+        inverse.curves_replaced.push_back(*old);
+      } else if (old && !now) {
+        inverse.curves_added.push_back(*old);
+      }
     }
+    for (const auto& [id, old] : old_nodes_) {
+      const Node* now = net_.find_node(id);
+      if (!now) {
+        if (old) inverse.nodes_added.push_back(*old);
+        continue;
+      }
+      if (!old) {
+        inverse.nodes_removed.push_back(id);
+        continue;
+      }
+      if (*old == *now) continue;
+      const bool survives = std::any_of(now->incidences.begin(), now->incidences.end(),
+                                        [&](const NodeIncidence& inc) { return !new_curves.count(inc.curve); });
+      if (survives) {
+        inverse.nodes_replaced.push_back(*old);
+      } else {
+        inverse.nodes_removed.push_back(id);
+        inverse.nodes_added.push_back(*old);
+      }
+    }
+    for (const auto& [id, old] : old_patches_) {
+      auto it = net_.patches_.find(id);
+      const Patch* now = it == net_.patches_.end() ? nullptr : &it->second;
+      if (now && (!old || *old != *now)) inverse.patches_removed.push_back(id);
+      if (old && (!now || *old != *now)) inverse.patches_added.push_back(*old);
+    }
+    return inverse;
   }
-  for (const auto& [id, old] : old_nodes) {
-    const Node* now = find_node(id);
-    if (!now) {
-      if (old) inverse.nodes_added.push_back(*old);
-      continue;
-    }
-    if (!old) {
-      inverse.nodes_removed.push_back(id);
-      continue;
-    }
-    if (*old == *now) continue;
-    const bool survives = std::any_of(now->incidences.begin(), now->incidences.end(),
-                                      [&](const NodeIncidence& inc) { return !new_curves.count(inc.curve); });
-    if (survives) {
-      inverse.nodes_replaced.push_back(*old);
-    } else {
-      inverse.nodes_removed.push_back(id);
-      inverse.nodes_added.push_back(*old);
-    }
-  }
-  for (const auto& [id, old] : old_patches) {
-    auto it = patches_.find(id);
-    const Patch* now = it == patches_.end() ? nullptr : &it->second;
-    if (now && (!old || *old != *now)) inverse.patches_removed.push_back(id);
-    if (old && (!now || *old != *now)) inverse.patches_added.push_back(*old);
-  }
-  return inverse;
-}
+
+  Network& net_;
+  const Edit& edit_;
+  // Journal: state of each touched item before this edit (nullopt: absent).
+  std::map<CurveId, std::optional<NetworkCurve>> old_curves_;
+  std::map<NodeId, std::optional<Node>> old_nodes_;
+  std::map<PatchId, std::optional<Patch>> old_patches_;
+  const IdCounters old_counters_;
+  // Where each explicitly given curve / node / patch came from, for errors.
+  std::map<CurveId, std::string> curve_origin_;
+  std::map<NodeId, std::string> node_origin_;
+  std::map<PatchId, std::string> patch_origin_;
+  bool index_touched_ = false;
+};
+
+Edit Network::apply(const Edit& edit) { return NetworkApplier(*this, edit).run(); }
 
 }  // namespace sketchlab

@@ -59,6 +59,13 @@ std::string check_descriptor(const PluginDescriptor& d, const FileName& expected
   if (!has_factory) {
     return "descriptor has no factory for its kind (" + std::string(to_string(d.kind)) + ")";
   }
+  if (d.make_pointer_input && d.kind != PluginKind::input) return "a pointer input factory on a non-input plugin";
+  if (!d.recording_param.empty()) {
+    const auto spec = std::find_if(d.params.begin(), d.params.end(),
+                                   [&](const ParamSpec& s) { return s.name == d.recording_param; });
+    if (d.kind != PluginKind::input || spec == d.params.end() || spec->type != ParamType::string)
+      return "recording_param '" + d.recording_param + "' is not a string parameter of an input";
+  }
   std::set<std::string> names;
   for (const auto& spec : d.params) {
     if (spec.name.empty()) return "a parameter has an empty name";
@@ -305,6 +312,26 @@ std::shared_ptr<Surfacer> PluginHost::make_surfacer(
 std::shared_ptr<Input> PluginHost::make_input(const std::string& name,
                                               const std::map<std::string, ParamValue>& params) const {
   return make_object<Input>(*this, PluginKind::input, name, params, &PluginDescriptor::make_input);
+}
+
+std::vector<std::string> PluginHost::pointer_input_names() const {
+  std::vector<std::string> names;
+  for (const auto& p : plugins_)
+    if (p.descriptor->kind == PluginKind::input && p.descriptor->make_pointer_input)
+      names.push_back(p.descriptor->name);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::shared_ptr<PointerInput> PluginHost::make_pointer_input(
+    const std::string& name, const std::map<std::string, ParamValue>& params) const {
+  if (const LoadedPlugin* plugin = find(PluginKind::input, name); plugin && !plugin->descriptor->make_pointer_input) {
+    std::string known;
+    for (const auto& n : pointer_input_names()) known += (known.empty() ? "" : ", ") + n;
+    throw PluginError("input '" + name + "' is not a pointer input; pointer inputs: " +
+                      (known.empty() ? std::string("none loaded") : known));
+  }
+  return make_object<PointerInput>(*this, PluginKind::input, name, params, &PluginDescriptor::make_pointer_input);
 }
 
 }  // namespace sketchlab

@@ -260,7 +260,7 @@ void Session::surfacer_command(const SurfaceCommand& command, const std::string&
 
 StepReport Session::handle(const Event& event) {
   StepReport report;
-  report.event = std::string(event_type_name(event.payload));
+  report.event = event_kind(event.payload);
   report.time = event.time;
   Reversal reversal{sketch_.workspace, sketch_.mode, sketch_.correction_enabled};
   const BudgetScope budget(time_budget_s_);

@@ -184,61 +184,91 @@ double combination_weight(const CurveCombination& c, const AnalyticParams& p) {
   return w;
 }
 
-CurveInference infer_curve(const Scaffold& s, const Camera& cam, const Stroke2d& stroke,
-                           const AnalyticParams& p) {
-  CurveInference out;
-  out.points = collect_curve_points(s, cam, stroke, p);
-  const auto& pts = out.points;
-  if (pts.size() < 2 || stroke.points.size() < 2) return out;
-  const double tol = 1e-6 * s.extent;
-  std::vector<int> starts, ends, interior;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const auto q = cam.project(pts[i].p);
-    const bool at_start = (*q - stroke.points.front()).norm() <= p.k_r * stroke.delta.front();
-    const bool at_end = (*q - stroke.points.back()).norm() <= p.k_r * stroke.delta.back();
-    if (at_start && !at_end) starts.push_back(static_cast<int>(i));
-    else if (at_end && !at_start) ends.push_back(static_cast<int>(i));
-    else if (!at_start && !at_end) interior.push_back(static_cast<int>(i));
+namespace {
+
+// A point set of the search: a start point, interior points, an end point.
+struct PointSet {
+  std::vector<int> points;
+  double bound = 0.0;  // C with every option at its best (S, G <= 1)
+  bool coplanar = false, symmetric = false;
+  double s_free = -1.0;  // S of the fit with free tangents (-1: not fitted)
+  double g_free = 0.0;   // G of that fit
+};
+
+// The search of §3.2 over point sets and, within each, tangent assignments,
+// in named stages: classify the candidate points by where they project,
+// enumerate the point sets, fit each with free tangents, then visit the sets
+// in bound order with a branch-and-bound over their tangents. Fitness F =
+// S·G·C; `out` collects the best two choices and the counts.
+class CurveSearch {
+ public:
+  CurveSearch(const Scaffold& s, const Camera& cam, const Stroke2d& stroke, const AnalyticParams& p,
+              CurveInference& out)
+      : cam_(cam), stroke_(stroke), p_(p), out_(out), pts_(out.points), tol_(1e-6 * s.extent) {}
+
+  void run() {
+    if (!classify_points()) return;
+    enumerate_point_sets();
+    fit_free_tangents();
+    for (std::size_t i : visit_order()) {
+      check_budget();  // issue 17: the per-event time budget
+      search_tangents(i);
+    }
   }
-  if (starts.empty() || ends.empty()) return out;
-  const int m = std::min<int>(static_cast<int>(interior.size()), 20);
 
-  struct Subset {
-    std::vector<int> points;
-    double bound = 0.0;  // C with every option at its best (S, G <= 1)
-    bool coplanar = false, symmetric = false;
-    double s_free = -1.0;  // S of the fit with free tangents (-1: not fitted)
-    double g_free = 0.0;   // G of that fit
-  };
-  std::vector<Subset> subsets;
-  for (int a : starts)
-    for (int b : ends)
-      for (std::uint64_t mask = 0; mask < (std::uint64_t{1} << m); ++mask) {
-        Subset sub;
-        sub.points.push_back(a);
-        for (int i = 0; i < m; ++i)
-          if (mask >> i & 1) sub.points.push_back(interior[static_cast<std::size_t>(i)]);
-        sub.points.push_back(b);
-        std::vector<Vec3> xs;
-        for (int i : sub.points) xs.push_back(pts[static_cast<std::size_t>(i)].p);
-        if ((xs.back() - xs.front()).norm() <= tol) continue;
-        const std::vector<std::optional<Vec3>> none(xs.size());
-        sub.coplanar = xs.size() <= 3 || plane_of(xs, none, tol).planar;
-        sub.symmetric = points_symmetric(xs, tol);
-        CurveCombination cmax;
-        cmax.points = sub.points;
-        for (int i : sub.points) cmax.tangents.push_back(pts[static_cast<std::size_t>(i)].directions.empty() ? -1 : 0);
-        cmax.planar = sub.coplanar;
-        cmax.symmetric = sub.symmetric;
-        sub.bound = combination_weight(cmax, p);
-        subsets.push_back(std::move(sub));
-      }
+ private:
+  const CurvePoint& point(int i) const { return pts_[static_cast<std::size_t>(i)]; }
 
-  auto make_problem = [&](const CurveCombination& c, FitProblem& pr) {
+  // Points projecting within k_r·δ of the stroke's start or end are its
+  // possible ends; the others interior. False when an end has no candidate.
+  bool classify_points() {
+    for (std::size_t i = 0; i < pts_.size(); ++i) {
+      const auto q = cam_.project(pts_[i].p);
+      const bool at_start = (*q - stroke_.points.front()).norm() <= p_.k_r * stroke_.delta.front();
+      const bool at_end = (*q - stroke_.points.back()).norm() <= p_.k_r * stroke_.delta.back();
+      if (at_start && !at_end) starts_.push_back(static_cast<int>(i));
+      else if (at_end && !at_start) ends_.push_back(static_cast<int>(i));
+      else if (!at_start && !at_end) interior_.push_back(static_cast<int>(i));
+    }
+    return !starts_.empty() && !ends_.empty();
+  }
+
+  // Every (start, subset of at most 20 interior points, end), with the upper
+  // bound of its family's C.
+  void enumerate_point_sets() {
+    const int m = std::min<int>(static_cast<int>(interior_.size()), 20);
+    for (int a : starts_)
+      for (int b : ends_)
+        for (std::uint64_t mask = 0; mask < (std::uint64_t{1} << m); ++mask) {
+          PointSet set;
+          set.points.push_back(a);
+          for (int i = 0; i < m; ++i)
+            if (mask >> i & 1) set.points.push_back(interior_[static_cast<std::size_t>(i)]);
+          set.points.push_back(b);
+          std::vector<Vec3> xs;
+          for (int i : set.points) xs.push_back(point(i).p);
+          if ((xs.back() - xs.front()).norm() <= tol_) continue;
+          const std::vector<std::optional<Vec3>> none(xs.size());
+          set.coplanar = xs.size() <= 3 || plane_of(xs, none, tol_).planar;
+          set.symmetric = points_symmetric(xs, tol_);
+          CurveCombination cmax;
+          cmax.points = set.points;
+          for (int i : set.points) cmax.tangents.push_back(point(i).directions.empty() ? -1 : 0);
+          cmax.planar = set.coplanar;
+          cmax.symmetric = set.symmetric;
+          set.bound = combination_weight(cmax, p_);
+          sets_.push_back(std::move(set));
+        }
+  }
+
+  // The fit problem of a combination: its joints and tangents, and the rays
+  // through the stroke between consecutive joints. False for a degenerate
+  // arclength order.
+  bool make_problem(const CurveCombination& c, FitProblem& pr) const {
     const std::size_t n = c.points.size();
     std::vector<double> arc;
     for (std::size_t j = 0; j < n; ++j) {
-      const CurvePoint& cp = pts[static_cast<std::size_t>(c.points[j])];
+      const CurvePoint& cp = point(c.points[j]);
       pr.joints.push_back(cp.p);
       pr.tangent_dir.push_back(c.tangents[j] >= 0 ? std::optional<Vec3>(cp.directions[static_cast<std::size_t>(c.tangents[j])])
                                                   : std::nullopt);
@@ -247,193 +277,238 @@ CurveInference infer_curve(const Scaffold& s, const Camera& cam, const Stroke2d&
     // The curve runs from the first to the last constraint: the stroke's ends
     // beyond them are within the uncertainty radius.
     arc.front() = 0.0;
-    arc.back() = stroke.length;
-    const int per = std::max(2, p.samples_per_segment);
+    arc.back() = stroke_.length;
+    const int per = std::max(2, p_.samples_per_segment);
     for (std::size_t k = 0; k + 1 < n; ++k) {
       if (!(arc[k + 1] > arc[k])) return false;
       std::vector<Ray> rays;
       std::vector<double> us;
       for (int i = 0; i < per; ++i) {
         const double u = (i + 0.5) / per;
-        rays.push_back(cam.ray(point_at(stroke.points, arc[k] + u * (arc[k + 1] - arc[k]))));
+        rays.push_back(cam_.ray(point_at(stroke_.points, arc[k] + u * (arc[k + 1] - arc[k]))));
         us.push_back(u);
       }
       pr.rays.push_back(std::move(rays));
       pr.u0.push_back(std::move(us));
     }
     return true;
-  };
+  }
 
-  double best_f = 0.0;
   // §3.2: discard a family whose upper bound is below the best fitness.
-  auto promising = [&](double bound) { return p.curve_exhaustive || bound > best_f; };
-  auto consider = [&](const CurveCombination& c, const Curve& curve, double sc, double g) {
+  bool promising(double bound) const { return p_.curve_exhaustive || bound > best_f_; }
+
+  void consider(const CurveCombination& c, const Curve& curve, double sc, double g) {
     const double f = sc * g * c.weight;
     CurveChoice ch{c, curve, f, sc, g};
-    if (!out.best || f > out.best->fitness) {
-      if (out.best) out.runner_up = out.best;
-      out.best = ch;
-      best_f = f;
-    } else if (!out.runner_up || f > out.runner_up->fitness) {
-      out.runner_up = ch;
+    if (!out_.best || f > out_.best->fitness) {
+      if (out_.best) out_.runner_up = out_.best;
+      out_.best = ch;
+      best_f_ = f;
+    } else if (!out_.runner_up || f > out_.runner_up->fitness) {
+      out_.runner_up = ch;
     }
-  };
+  }
 
   // The fit with free tangents bounds S for every tangent assignment of a
-  // point set (§3.2), so fit those first and visit point sets by S_free·C_max:
-  // good candidates come early and the bound prunes the rest.
-  std::vector<FitResult> free_fits(subsets.size());
-  for (std::size_t i = 0; i < subsets.size(); ++i) {
-    check_budget();  // issue 17: the per-event time budget
-    Subset& sub = subsets[i];
-    CurveCombination c;
-    c.points = sub.points;
-    c.tangents.assign(sub.points.size(), -1);
-    FitProblem pr;
-    if (!make_problem(c, pr)) continue;
-    free_fits[i] = fit_spline(pr, p.fit_iterations);
-    ++out.fitted;
-    if (!free_fits[i].ok) continue;
-    sub.s_free = curve_stroke_score(free_fits[i].curve, cam, stroke, p);
-    sub.g_free = curvature_prior(free_fits[i].curve, p);
+  // point set (§3.2), so fit those first.
+  void fit_free_tangents() {
+    free_fits_.resize(sets_.size());
+    for (std::size_t i = 0; i < sets_.size(); ++i) {
+      check_budget();  // issue 17: the per-event time budget
+      PointSet& set = sets_[i];
+      CurveCombination c;
+      c.points = set.points;
+      c.tangents.assign(set.points.size(), -1);
+      FitProblem pr;
+      if (!make_problem(c, pr)) continue;
+      free_fits_[i] = fit_spline(pr, p_.fit_iterations);
+      ++out_.fitted;
+      if (!free_fits_[i].ok) continue;
+      set.s_free = curve_stroke_score(free_fits_[i].curve, cam_, stroke_, p_);
+      set.g_free = curvature_prior(free_fits_[i].curve, p_);
+    }
   }
-  std::vector<std::size_t> order(subsets.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return subsets[a].s_free * subsets[a].bound > subsets[b].s_free * subsets[b].bound;
-  });
-  // Within a point set, a branch-and-bound over tangent assignments, point by
-  // point: constraining more tangents can only lower S, so the S of a partial
-  // assignment (the rest free) times the best C of its completions bounds
-  // every completion (§3.2's bound, applied at each level).
+
+  // Point sets by S_free·C_max: good candidates come early and the bound
+  // prunes the rest.
+  std::vector<std::size_t> visit_order() const {
+    std::vector<std::size_t> order(sets_.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return sets_[a].s_free * sets_[a].bound > sets_[b].s_free * sets_[b].bound;
+    });
+    return order;
+  }
+
   // A child's fit starts from its parent's sample parameters (same points):
   // half the foot-point rounds suffice.
-  auto fit_of = [&](const CurveCombination& c, bool planar, bool symmetric,
-                    const std::vector<std::vector<double>>* warm = nullptr) {
+  FitResult fit_of(const CurveCombination& c, bool planar, bool symmetric,
+                   const std::vector<std::vector<double>>* warm = nullptr) {
     FitProblem q;
     FitResult r;
     if (!make_problem(c, q)) return r;
     if (warm && warm->size() == q.u0.size()) q.u0 = *warm;
-    const int rounds = warm ? std::max(1, p.fit_iterations / 2) : p.fit_iterations;
-    if (planar) q.plane_normal = plane_of(q.joints, q.tangent_dir, tol).normal;
+    const int rounds = warm ? std::max(1, p_.fit_iterations / 2) : p_.fit_iterations;
+    if (planar) q.plane_normal = plane_of(q.joints, q.tangent_dir, tol_).normal;
     q.symmetric = symmetric;
     r = fit_spline(q, rounds);
-    ++out.fitted;
+    ++out_.fitted;
     return r;
-  };
-  for (std::size_t oi : order) {
-    check_budget();  // issue 17: the per-event time budget
-    const Subset& sub = subsets[oi];
-    const std::size_t n = sub.points.size();
-    long long family = sub.symmetric ? 2 : 1;
-    for (int i : sub.points) family *= 1 + static_cast<long long>(pts[static_cast<std::size_t>(i)].directions.size());
-    out.combinations += family;
-    if (!free_fits[oi].ok || !promising(sub.s_free * sub.bound)) continue;  // §3.2, G <= 1
-    std::vector<Vec3> xs;
-    for (int i : sub.points) xs.push_back(pts[static_cast<std::size_t>(i)].p);
-    // G bound of the family (README: a choice, not strictly admissible):
-    // free tangents let the fit wiggle in depth (G near 0), while the
-    // scaffold's tangents give the intended shape, so the larger G of the
-    // free fit and of the probe fit with every point's first tangent option,
-    // times curve_g_slack, stands in for the paper's G <= 1. The probe is
-    // only a bound: its combination is scored when the tree reaches it.
-    double gb = 1.0;
-    if (p.curve_g_slack > 0 && !p.curve_exhaustive) {
-      double g_probe = sub.g_free;
-      CurveCombination probe;
-      probe.points = sub.points;
-      for (int i : sub.points) probe.tangents.push_back(pts[static_cast<std::size_t>(i)].directions.empty() ? -1 : 0);
-      if (std::any_of(probe.tangents.begin(), probe.tangents.end(), [](int t) { return t >= 0; })) {
-        FitProblem q;
-        if (make_problem(probe, q)) {
-          const FitResult f = fit_spline(q, p.fit_iterations);
-          ++out.fitted;
-          if (f.ok) g_probe = std::max(g_probe, curvature_prior(f.curve, p));
-        }
-      }
-      gb = std::min(1.0, p.curve_g_slack * g_probe);
-      if (!promising(sub.s_free * gb * sub.bound)) continue;
-    }
-    auto consider_in = [&](const CurveCombination& c, const Curve& curve, double sc) {
-      const double g = curvature_prior(curve, p);
-      if (g > gb) ++out.g_bound_exceeded;
-      consider(c, curve, sc, g);
-    };
-    std::vector<int> choice(n, -1);
-    // Best C of any completion of choice[0..j).
-    auto completion_bound = [&](std::size_t j) {
-      CurveCombination c;
-      c.points = sub.points;
-      c.tangents = choice;
-      for (std::size_t k = j; k < n; ++k)
-        c.tangents[k] = pts[static_cast<std::size_t>(sub.points[k])].directions.empty() ? -1 : 0;
-      c.planar = sub.coplanar;
-      c.symmetric = sub.symmetric;
-      return combination_weight(c, p);
-    };
-    auto leaf = [&](const Curve& node_curve, const std::vector<std::vector<double>>& node_u, double node_s) {
-      CurveCombination c;
-      c.points = sub.points;
-      c.tangents = choice;
-      std::vector<std::optional<Vec3>> dirs(n);
-      for (std::size_t j = 0; j < n; ++j)
-        if (choice[j] >= 0) dirs[j] = pts[static_cast<std::size_t>(sub.points[j])].directions[static_cast<std::size_t>(choice[j])];
-      c.planar = sub.coplanar && plane_of(xs, dirs, tol).planar;
-      c.weight = combination_weight(c, p);
-      if (!c.planar) {
-        consider_in(c, node_curve, node_s);
-      } else if (promising(node_s * gb * c.weight)) {
-        const FitResult f = fit_of(c, true, false, &node_u);
-        if (f.ok) consider_in(c, f.curve, curve_stroke_score(f.curve, cam, stroke, p));
-      }
-      if (sub.symmetric && tangents_symmetric(xs, dirs)) {
-        CurveCombination sym = c;
-        sym.symmetric = true;
-        sym.weight = combination_weight(sym, p);
-        if (promising(node_s * gb * sym.weight)) {
-          const FitResult f = fit_of(sym, sym.planar, true, &node_u);
-          if (f.ok) consider_in(sym, f.curve, curve_stroke_score(f.curve, cam, stroke, p));
-        }
-      }
-    };
-    auto explore = [&](auto&& self, std::size_t j, const Curve& node_curve,
-                       const std::vector<std::vector<double>>& node_u, double node_s) -> void {
-      if (j == n) {
-        leaf(node_curve, node_u, node_s);
-        return;
-      }
-      const CurvePoint& cp = pts[static_cast<std::size_t>(sub.points[j])];
-      struct Child {
-        int option;
-        Curve curve;
-        std::vector<std::vector<double>> u;
-        double s, bound;
-      };
-      std::vector<Child> children;
-      for (int o = 0; o < static_cast<int>(cp.directions.size()); ++o) {
-        choice[j] = o;
-        if (!promising(node_s * gb * completion_bound(j + 1))) continue;
-        CurveCombination c;
-        c.points = sub.points;
-        c.tangents = choice;
-        const FitResult f = fit_of(c, false, false, &node_u);
-        if (!f.ok) continue;
-        const double sc = curve_stroke_score(f.curve, cam, stroke, p);
-        children.push_back({o, f.curve, f.u, sc, sc * gb * completion_bound(j + 1)});
-      }
-      choice[j] = -1;
-      children.push_back({-1, node_curve, node_u, node_s, node_s * gb * completion_bound(j + 1)});
-      std::stable_sort(children.begin(), children.end(),
-                       [](const Child& a, const Child& b) { return a.bound > b.bound; });
-      for (const Child& ch : children) {
-        if (!promising(ch.bound)) continue;
-        choice[j] = ch.option;
-        self(self, j + 1, ch.curve, ch.u, ch.s);
-      }
-      choice[j] = -1;
-    };
-    explore(explore, 0, free_fits[oi].curve, free_fits[oi].u, sub.s_free);
   }
+
+  // G bound of the family (README: a choice, not strictly admissible): free
+  // tangents let the fit wiggle in depth (G near 0), while the scaffold's
+  // tangents give the intended shape, so the larger G of the free fit and of
+  // the probe fit with every point's first tangent option, times
+  // curve_g_slack, stands in for the paper's G <= 1. The probe is only a
+  // bound: its combination is scored when the tree reaches it.
+  double g_bound(const PointSet& set) {
+    double g_probe = set.g_free;
+    CurveCombination probe;
+    probe.points = set.points;
+    for (int i : set.points) probe.tangents.push_back(point(i).directions.empty() ? -1 : 0);
+    if (std::any_of(probe.tangents.begin(), probe.tangents.end(), [](int t) { return t >= 0; })) {
+      FitProblem q;
+      if (make_problem(probe, q)) {
+        const FitResult f = fit_spline(q, p_.fit_iterations);
+        ++out_.fitted;
+        if (f.ok) g_probe = std::max(g_probe, curvature_prior(f.curve, p_));
+      }
+    }
+    return std::min(1.0, p_.curve_g_slack * g_probe);
+  }
+
+  // The tangent search of one point set.
+  struct TangentSearch {
+    const PointSet& set;
+    std::vector<Vec3> xs;      // the set's points
+    double gb = 1.0;           // G bound of the family
+    std::vector<int> choice;   // tangent option per point so far (-1: free)
+  };
+
+  // Within a point set, a branch-and-bound over tangent assignments, point by
+  // point: constraining more tangents can only lower S, so the S of a partial
+  // assignment (the rest free) times the best C of its completions bounds
+  // every completion (§3.2's bound, applied at each level).
+  void search_tangents(std::size_t i) {
+    const PointSet& set = sets_[i];
+    long long family = set.symmetric ? 2 : 1;
+    for (int k : set.points) family *= 1 + static_cast<long long>(point(k).directions.size());
+    out_.combinations += family;
+    if (!free_fits_[i].ok || !promising(set.s_free * set.bound)) return;  // §3.2, G <= 1
+    TangentSearch ts{set, {}, 1.0, std::vector<int>(set.points.size(), -1)};
+    for (int k : set.points) ts.xs.push_back(point(k).p);
+    if (p_.curve_g_slack > 0 && !p_.curve_exhaustive) {
+      ts.gb = g_bound(set);
+      if (!promising(set.s_free * ts.gb * set.bound)) return;
+    }
+    explore(ts, 0, free_fits_[i].curve, free_fits_[i].u, set.s_free);
+  }
+
+  void consider_in(const TangentSearch& ts, const CurveCombination& c, const Curve& curve, double sc) {
+    const double g = curvature_prior(curve, p_);
+    if (g > ts.gb) ++out_.g_bound_exceeded;
+    consider(c, curve, sc, g);
+  }
+
+  // Best C of any completion of choice[0..j).
+  double completion_bound(const TangentSearch& ts, std::size_t j) const {
+    CurveCombination c;
+    c.points = ts.set.points;
+    c.tangents = ts.choice;
+    for (std::size_t k = j; k < c.points.size(); ++k) c.tangents[k] = point(ts.set.points[k]).directions.empty() ? -1 : 0;
+    c.planar = ts.set.coplanar;
+    c.symmetric = ts.set.symmetric;
+    return combination_weight(c, p_);
+  }
+
+  // A complete assignment: scored as fitted, refitted in its plane when
+  // coplanar, and as its symmetric variant when the tangents allow one.
+  void leaf(const TangentSearch& ts, const Curve& node_curve, const std::vector<std::vector<double>>& node_u,
+            double node_s) {
+    const std::size_t n = ts.set.points.size();
+    CurveCombination c;
+    c.points = ts.set.points;
+    c.tangents = ts.choice;
+    std::vector<std::optional<Vec3>> dirs(n);
+    for (std::size_t j = 0; j < n; ++j)
+      if (ts.choice[j] >= 0) dirs[j] = point(ts.set.points[j]).directions[static_cast<std::size_t>(ts.choice[j])];
+    c.planar = ts.set.coplanar && plane_of(ts.xs, dirs, tol_).planar;
+    c.weight = combination_weight(c, p_);
+    if (!c.planar) {
+      consider_in(ts, c, node_curve, node_s);
+    } else if (promising(node_s * ts.gb * c.weight)) {
+      const FitResult f = fit_of(c, true, false, &node_u);
+      if (f.ok) consider_in(ts, c, f.curve, curve_stroke_score(f.curve, cam_, stroke_, p_));
+    }
+    if (ts.set.symmetric && tangents_symmetric(ts.xs, dirs)) {
+      CurveCombination sym = c;
+      sym.symmetric = true;
+      sym.weight = combination_weight(sym, p_);
+      if (promising(node_s * ts.gb * sym.weight)) {
+        const FitResult f = fit_of(sym, sym.planar, true, &node_u);
+        if (f.ok) consider_in(ts, sym, f.curve, curve_stroke_score(f.curve, cam_, stroke_, p_));
+      }
+    }
+  }
+
+  // Point j's tangent options (and free), best bound first.
+  void explore(TangentSearch& ts, std::size_t j, const Curve& node_curve,
+               const std::vector<std::vector<double>>& node_u, double node_s) {
+    if (j == ts.set.points.size()) {
+      leaf(ts, node_curve, node_u, node_s);
+      return;
+    }
+    const CurvePoint& cp = point(ts.set.points[j]);
+    struct Child {
+      int option;
+      Curve curve;
+      std::vector<std::vector<double>> u;
+      double s, bound;
+    };
+    std::vector<Child> children;
+    for (int o = 0; o < static_cast<int>(cp.directions.size()); ++o) {
+      ts.choice[j] = o;
+      if (!promising(node_s * ts.gb * completion_bound(ts, j + 1))) continue;
+      CurveCombination c;
+      c.points = ts.set.points;
+      c.tangents = ts.choice;
+      const FitResult f = fit_of(c, false, false, &node_u);
+      if (!f.ok) continue;
+      const double sc = curve_stroke_score(f.curve, cam_, stroke_, p_);
+      children.push_back({o, f.curve, f.u, sc, sc * ts.gb * completion_bound(ts, j + 1)});
+    }
+    ts.choice[j] = -1;
+    children.push_back({-1, node_curve, node_u, node_s, node_s * ts.gb * completion_bound(ts, j + 1)});
+    std::stable_sort(children.begin(), children.end(), [](const Child& a, const Child& b) { return a.bound > b.bound; });
+    for (const Child& ch : children) {
+      if (!promising(ch.bound)) continue;
+      ts.choice[j] = ch.option;
+      explore(ts, j + 1, ch.curve, ch.u, ch.s);
+    }
+    ts.choice[j] = -1;
+  }
+
+  const Camera& cam_;
+  const Stroke2d& stroke_;
+  const AnalyticParams& p_;
+  CurveInference& out_;
+  const std::vector<CurvePoint>& pts_;
+  const double tol_;
+  std::vector<int> starts_, ends_, interior_;
+  std::vector<PointSet> sets_;
+  std::vector<FitResult> free_fits_;
+  double best_f_ = 0.0;
+};
+
+}  // namespace
+
+CurveInference infer_curve(const Scaffold& s, const Camera& cam, const Stroke2d& stroke,
+                           const AnalyticParams& p) {
+  CurveInference out;
+  out.points = collect_curve_points(s, cam, stroke, p);
+  if (out.points.size() < 2 || stroke.points.size() < 2) return out;
+  CurveSearch(s, cam, stroke, p, out).run();
   if (out.best && out.runner_up && out.best->fitness > 0)
     out.confidence = out.runner_up->fitness / out.best->fitness;
   return out;

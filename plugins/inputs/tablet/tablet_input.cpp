@@ -23,8 +23,8 @@ RecordingHeader TabletInput::header() const {
   return h;
 }
 
-std::optional<Event> TabletInput::next() {
-  if (queue_.empty()) return std::nullopt;
+NextEvent TabletInput::next() {
+  if (queue_.empty()) return finished() ? NextEvent::ended() : NextEvent::not_ready();
   Event e = std::move(queue_.front());
   queue_.pop_front();
   return e;

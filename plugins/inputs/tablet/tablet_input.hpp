@@ -21,7 +21,7 @@ class TabletInput : public PointerInput {
   explicit TabletInput(const TabletParams& params);
 
   RecordingHeader header() const override;
-  std::optional<Event> next() override;
+  NextEvent next() override;
   bool finished() const override { return closed_ && queue_.empty(); }
 
   void pen_down(const PointerSample& sample, const PointerContext& context) override;

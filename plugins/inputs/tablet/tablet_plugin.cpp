@@ -32,7 +32,7 @@ PluginDescriptor describe() {
       {"up", ParamType::choice, std::string("y"), {}, {}, {"y", "z"}, "",
        "workspace up axis written in the recording header"},
   };
-  return input_descriptor<TabletPlugin>(
+  return pointer_input_descriptor<TabletPlugin>(
       "tablet", "1.0",
       "live pen/mouse strokes pushed by a window (2D pixels + View, pressure from XInput2)",
       std::move(specs));

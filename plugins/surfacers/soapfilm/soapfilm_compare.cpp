@@ -24,7 +24,7 @@
 
 #include "cassie_graph.hpp"
 #include "cassie_replay.hpp"
-#include "sketchlab/run/distribution.hpp"
+#include "sketchlab/lab/distribution.hpp"
 
 using namespace sketchlab;
 using namespace sketchlab::soapfilm;

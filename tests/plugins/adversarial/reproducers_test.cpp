@@ -73,7 +73,7 @@ TEST_CASE("D3: a glitch sample kilometres away no longer hangs the world-space s
       for (const std::string s : {"", "soapfilm", "hermite_rbf"}) {
         const Replayed r = replay(fixture, c, s);
         std::size_t corrected = 0;
-        for (const StepReport& step : r.steps) corrected += step.event == "stroke" && step.error.empty();
+        for (const StepReport& step : r.steps) corrected += step.event == EventKind::stroke && step.error.empty();
         INFO(fixture << " on " << c << "+" << s);
         CHECK(corrected >= 3);
         CHECK(r.sketch.network.curves().size() >= 3);
@@ -102,7 +102,7 @@ TEST_CASE("D6: JustDrawIt on far and glitching pixels ends at once", "[adversari
 TEST_CASE("D3: JustDrawIt refuses strokes on a draw plane containing the view rays", "[adversarial][reliability]") {
   const Replayed r = replay("H4_justdrawit_plane_parallel.jsonl", "justdrawit", "");
   for (const StepReport& step : r.steps) {
-    if (step.event != "stroke") continue;
+    if (step.event != EventKind::stroke) continue;
     INFO("stroke " << step.stroke.value_or(0));
     CHECK(step.error.find("ray misses the draw plane") != std::string::npos);
   }

@@ -4,8 +4,8 @@
 
 #include "build_plugin_host.hpp"
 #include "sketchlab/config/config.hpp"
+#include "sketchlab/lab/stack.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
-#include "sketchlab/run/stack.hpp"
 #include "test_paths.hpp"
 
 namespace sketchlab::test {

@@ -19,7 +19,7 @@
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/plugin/recording_input.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/stack.hpp"
+#include "sketchlab/lab/stack.hpp"
 #include "viewers/xvfb.hpp"
 #include "correction_feedback.hpp"
 #include "workspace_actors.hpp"

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "sketchlab/config/config.hpp"
+#include "sketchlab/lab/stack.hpp"
 #include "sketchlab/plugin/recording_input.hpp"
-#include "sketchlab/run/stack.hpp"
 #include "sketchlab/types.hpp"
 #include "test_paths.hpp"
 

@@ -60,7 +60,7 @@ bool ReplayController::step_back() {
 const StepReport* ReplayController::last_stroke_report(std::size_t stack) const {
   const auto& r = reports_.at(stack);
   for (auto it = r.rbegin(); it != r.rend(); ++it)
-    if (it->stroke && it->event == "stroke") return &*it;
+    if (it->stroke && it->event == EventKind::stroke) return &*it;
   return nullptr;
 }
 

@@ -1,13 +1,14 @@
 // `sketchlab view`: loads the stacks and the recording, then runs the window.
 #include "sketchlab/desktop/view_app.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <iostream>
 #include <stdexcept>
 
 #include "desktop_window.hpp"
 #include "sketchlab/config/config.hpp"
+#include "sketchlab/lab/utc_timestamp.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/viewer/display.hpp"
@@ -26,15 +27,6 @@ std::vector<StackConfig> load_stacks(const ViewOptions& o) {
     return {freehand};
   }
   return viewer::load_viewer_stacks(o.config, overrides);
-}
-
-std::string utc_stamp() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
-  return buf;
 }
 
 }  // namespace
@@ -73,25 +65,27 @@ int run_view(const ViewOptions& o) {
   std::vector<StackInstance> stacks;
   for (const StackConfig& c : configs) stacks.push_back(instantiate_stack(c, host));
 
-  // The live input: the first stack's input when it is a tablet (with its
-  // parameters), else a tablet with defaults.
-  std::map<std::string, ParamValue> tablet_params;
+  // The live input: the first stack input that is a pointer input (with its
+  // parameters), else the first pointer input plugin loaded, with defaults.
+  const std::vector<std::string> pointer_inputs = host.pointer_input_names();
+  if (pointer_inputs.empty()) throw std::runtime_error("no pointer input plugin is loaded (e.g. tablet)");
+  std::string pointer_name = pointer_inputs.front();
+  std::map<std::string, ParamValue> pointer_params;
   for (const StackConfig& c : configs)
-    if (c.input && c.input->plugin == "tablet") {
-      tablet_params = c.input->params;
+    if (c.input && std::find(pointer_inputs.begin(), pointer_inputs.end(), c.input->plugin) != pointer_inputs.end()) {
+      pointer_name = c.input->plugin;
+      pointer_params = c.input->params;
       break;
     }
-  std::shared_ptr<Input> input = host.make_input("tablet", tablet_params);
-  if (!input) throw std::runtime_error("the tablet input plugin is not available");
-  auto pointer = std::dynamic_pointer_cast<PointerInput>(input);
-  if (!pointer) throw std::runtime_error("the tablet plugin does not implement PointerInput");
+  const std::shared_ptr<PointerInput> pointer = host.make_pointer_input(pointer_name, pointer_params);
+  const std::shared_ptr<Input> input = pointer;
 
   std::optional<Recording> replay;
   if (o.recording) replay = read_recording(*o.recording);
   WindowOptions w;
   w.options = o;
   if (w.options.record.empty())
-    w.options.record = "sketchlab-live-" + utc_stamp() + ".jsonl";
+    w.options.record = "sketchlab-live-" + utc_timestamp() + ".jsonl";
   if (w.options.save.empty()) {
     auto save = w.options.record;
     save.replace_filename(save.stem().string() + "-saved.jsonl");

@@ -83,7 +83,7 @@ void CorrectionWorker::run() {
     try {
       const std::vector<StepReport> reports = live_->handle(event);
       for (const StepReport& r : reports)
-        if (!r.error.empty()) problem = r.event + " at " + std::to_string(event.time) + " s: " + r.error;
+        if (!r.error.empty()) problem = std::string(to_string(r.event)) + " at " + std::to_string(event.time) + " s: " + r.error;
       if (std::holds_alternative<StrokeEvent>(event.payload))
         for (std::size_t i = 0; i < reports.size(); ++i) constraints_[i] = reports[i].constraints;
     } catch (const std::exception& e) {

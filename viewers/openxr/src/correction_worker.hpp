@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "sketchlab/run/live_session.hpp"
+#include "sketchlab/lab/live_session.hpp"
 
 namespace sketchlab::vr {
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <fstream>
 #include <map>
 #include <iostream>
@@ -12,8 +11,9 @@
 #include "eye_renderer.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/io/sketch_json.hpp"
-#include "sketchlab/run/stack.hpp"
-#include "sketchlab/run/stop_signals.hpp"
+#include "sketchlab/lab/stack.hpp"
+#include "sketchlab/lab/stop_signals.hpp"
+#include "sketchlab/lab/utc_timestamp.hpp"
 #include "sketchlab/viewer/display.hpp"
 #include "sketchlab/viewer/viewer_stacks.hpp"
 #include "vr_scene.hpp"
@@ -23,12 +23,7 @@
 namespace sketchlab::vr {
 namespace {
 
-std::filesystem::path default_recording() {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::gmtime(&now));
-  return std::string("vr-") + stamp + ".jsonl";
-}
+std::filesystem::path default_recording() { return "vr-" + utc_timestamp() + ".jsonl"; }
 
 openxr::InputSettings input_settings(const StackConfig& stack, std::ostream& err) {
   std::map<std::string, ParamValue> given;

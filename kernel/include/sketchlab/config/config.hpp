@@ -49,9 +49,12 @@ struct PluginChoice {
   SourceLocation location;  // of the `plugin:` key
 };
 
+// The input of a stack that names none: plays the experiment's recordings.
+inline constexpr const char* default_input_plugin = "replay";
+
 struct StackConfig {
   std::string name;
-  std::optional<PluginChoice> input;  // default: replay
+  std::optional<PluginChoice> input;  // default: default_input_plugin
   PluginChoice corrector;
   std::optional<PluginChoice> surfacer;
   // Seconds of corrector + surfacer time per event, in (0, 86400]; unset:

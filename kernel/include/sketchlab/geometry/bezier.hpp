@@ -23,6 +23,10 @@ Vec3 second_derivative(const Curve& curve, double t);
 Vec3 tangent(const Curve& curve, double t);
 
 // Single cubic segment helpers (u in [0,1]).
+// De Casteljau subdivision at u: the control points of [0, u] and [u, 1]
+// (their shared end is the point at u, exact at u = 0 and u = 1).
+std::pair<std::array<Vec3, 4>, std::array<Vec3, 4>> bezier_subdivide(const std::array<Vec3, 4>& p, double u);
+// The point at u (de Casteljau: the shared end of bezier_subdivide).
 Vec3 bezier_point(const std::array<Vec3, 4>& p, double u);
 Vec3 bezier_derivative(const std::array<Vec3, 4>& p, double u);
 

@@ -1,20 +1,50 @@
 #pragma once
 // Input plugins produce the event stream of a session.
+#include <cassert>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "sketchlab/event.hpp"
 
 namespace sketchlab {
+
+// What Input::next() gives: an event, nothing yet (a live input: ask again
+// later), or the end of the input (nothing will follow). Converts to true
+// only when it holds an event, so `while (auto e = input.next())` reads the
+// events ready now.
+class NextEvent {
+ public:
+  enum class State { event, not_ready, ended };
+  NextEvent(Event event) : state_(State::event), event_(std::move(event)) {}  // NOLINT: implicit by design
+  static NextEvent not_ready() { return NextEvent(State::not_ready); }
+  static NextEvent ended() { return NextEvent(State::ended); }
+
+  State state() const { return state_; }
+  bool has_event() const { return state_ == State::event; }
+  bool is_ended() const { return state_ == State::ended; }
+  explicit operator bool() const { return has_event(); }
+  // The event; only when has_event().
+  Event& operator*() { assert(event_); return *event_; }
+  const Event& operator*() const { assert(event_); return *event_; }
+  Event* operator->() { return &**this; }
+  const Event* operator->() const { return &**this; }
+
+ private:
+  explicit NextEvent(State state) : state_(state) {}
+  State state_;
+  std::optional<Event> event_;
+};
 
 class Input {
  public:
   virtual ~Input() = default;
   // Header of the session (workspace at start, units, provenance).
   virtual RecordingHeader header() const = 0;
-  // Next event, or nullopt when the input has ended (replay) or has nothing
-  // ready yet (live inputs: check finished()).
-  virtual std::optional<Event> next() = 0;
+  // The next event; NextEvent::not_ready() when a live input has nothing yet,
+  // NextEvent::ended() once the input has ended (then and only then
+  // finished() is true; also after an error()).
+  virtual NextEvent next() = 0;
   virtual bool finished() const = 0;
   // Non-empty once the input failed (device lost, unreadable file); it then
   // reports finished(). Events already returned stay valid.

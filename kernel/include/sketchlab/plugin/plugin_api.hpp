@@ -16,15 +16,17 @@
 //
 // where MyCorrector derives from Corrector and has a constructor taking
 // `const sketchlab::Params&` (already validated against `specs`).
-#include <boost/config.hpp>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "sketchlab/plugin/budget.hpp"
 #include "sketchlab/plugin/corrector.hpp"
+#include "sketchlab/plugin/export.hpp"
 #include "sketchlab/plugin/input.hpp"
+#include "sketchlab/plugin/pointer_input.hpp"
 #include "sketchlab/plugin/params.hpp"
 #include "sketchlab/plugin/surfacer.hpp"
 #include "sketchlab/version.hpp"
@@ -37,7 +39,10 @@ namespace sketchlab {
 // 4: the per-event time budget (budget.hpp): BudgetExceeded crosses the
 //    boundary and the wrappers below turn it into the call's error;
 //    Input::request_stop.
-inline constexpr std::uint32_t plugin_abi_version = 4;
+// 5: Input::next returns NextEvent (an event, not ready, or ended);
+//    PluginDescriptor::make_pointer_input (live pointer inputs) and
+//    PluginDescriptor::recording_param.
+inline constexpr std::uint32_t plugin_abi_version = 5;
 
 enum class PluginKind { corrector, surfacer, input };
 std::string_view to_string(PluginKind kind);
@@ -65,6 +70,13 @@ struct PluginDescriptor {
   Factory<Corrector> make_corrector = nullptr;
   Factory<Surfacer> make_surfacer = nullptr;
   Factory<Input> make_input = nullptr;
+  // Also set, besides make_input, by input plugins whose objects a window
+  // feeds with pointer events (pointer_input.hpp): the same object, typed.
+  Factory<PointerInput> make_pointer_input = nullptr;
+  // Input plugins that play a recording file: the string parameter that
+  // takes its path (an experiment sets it to each of its recordings). Empty
+  // for inputs that do not play files.
+  std::string recording_param = {};
 };
 
 namespace detail {
@@ -111,8 +123,8 @@ template <class T>
 class GuardedInput final : public T {
  public:
   using T::T;
-  std::optional<Event> next() override {
-    if (!error_.empty()) return std::nullopt;
+  NextEvent next() override {
+    if (!error_.empty()) return NextEvent::ended();
     try {
       return T::next();
     } catch (const std::exception& e) {
@@ -120,7 +132,7 @@ class GuardedInput final : public T {
     } catch (...) {
       error_ = "unknown exception";
     }
-    return std::nullopt;
+    return NextEvent::ended();
   }
   void request_stop() override {
     try {
@@ -178,10 +190,22 @@ PluginDescriptor input_descriptor(std::string name, std::string version, std::st
   return d;
 }
 
+// An input plugin whose objects are PointerInputs (T derives from it): hosts
+// get them typed through PluginHost::make_pointer_input.
+template <class T>
+PluginDescriptor pointer_input_descriptor(std::string name, std::string version, std::string summary,
+                                          std::vector<ParamSpec> params) {
+  static_assert(std::is_base_of_v<PointerInput, T>, "a pointer input plugin's class derives from PointerInput");
+  PluginDescriptor d = input_descriptor<T>(std::move(name), std::move(version), std::move(summary),
+                                           std::move(params));
+  d.make_pointer_input = &detail::make_guarded<PointerInput, detail::GuardedInput, T>;
+  return d;
+}
+
 }  // namespace sketchlab
 
 #define SKETCHLAB_PLUGIN(DESCRIBE_FN)                                                  \
-  extern "C" BOOST_SYMBOL_EXPORT const ::sketchlab::PluginHeader* sketchlab_plugin_entry() { \
+  extern "C" SKETCHLAB_SYMBOL_EXPORT const ::sketchlab::PluginHeader* sketchlab_plugin_entry() { \
     static const ::sketchlab::PluginDescriptor descriptor = DESCRIBE_FN();             \
     static const ::sketchlab::PluginHeader header{::sketchlab::plugin_abi_version,      \
                                                   SKETCHLAB_BUILD_FINGERPRINT, &descriptor}; \

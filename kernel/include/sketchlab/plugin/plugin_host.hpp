@@ -89,6 +89,12 @@ class PluginHost {
                                           const std::map<std::string, ParamValue>& params) const;
   std::shared_ptr<Input> make_input(const std::string& name,
                                     const std::map<std::string, ParamValue>& params) const;
+  // A live pointer input (pointer_input.hpp); throws PluginError when the
+  // input plugin `name` is not one (naming those that are).
+  std::shared_ptr<PointerInput> make_pointer_input(const std::string& name,
+                                                   const std::map<std::string, ParamValue>& params) const;
+  // The loaded input plugins that make pointer inputs, in name order.
+  std::vector<std::string> pointer_input_names() const;
 
  private:
   PluginLoadOptions options_;

@@ -4,11 +4,10 @@
 // events in order. The window decodes its windowing system's events (the
 // desktop viewer reads XInput2, with pressure from the device's valuators)
 // and the input plugin turns them into strokes, so the plugin needs no
-// windowing library and is testable on plain data. A viewer finds the
-// interface with dynamic_cast on the Input the plugin made.
+// windowing library and is testable on plain data. A viewer gets one from
+// the plugin host (PluginHost::make_pointer_input, for plugins described with
+// pointer_input_descriptor), never by casting across the plugin boundary.
 #include <optional>
-
-#include <boost/config.hpp>
 
 #include "sketchlab/plugin/input.hpp"
 
@@ -29,7 +28,7 @@ struct PointerContext {
   double workspace_scale = 1.0;
 };
 
-class BOOST_SYMBOL_VISIBLE PointerInput : public Input {
+class PointerInput : public Input {
  public:
   // A stroke starts; a stroke still open is finished first.
   virtual void pen_down(const PointerSample& sample, const PointerContext& context) = 0;

@@ -13,8 +13,8 @@ class RecordingInput : public Input {
  public:
   explicit RecordingInput(Recording recording) : recording_(std::move(recording)) {}
   RecordingHeader header() const override { return recording_.header; }
-  std::optional<Event> next() override {
-    if (finished()) return std::nullopt;
+  NextEvent next() override {
+    if (finished()) return NextEvent::ended();
     return recording_.events[next_++];
   }
   bool finished() const override { return next_ >= recording_.events.size(); }

@@ -10,7 +10,9 @@
 //                                 curves.ply, raw_strokes.ply, nodes.ply,
 //                                 patches.ply, sketch.obj (as enabled)
 //   <recording>/<recording>.mlp   MeshLab project with every layer of every stack
-//   <recording>/side_by_side.png  composite picture (when a renderer is given)
+//   <recording>/side_by_side.png  the cases' final sketches side by side (when a
+//                                 renderer is given; drawn from memory, so
+//                                 also without sketch.json)
 //   metrics.csv, metrics.json, report.html
 #include <filesystem>
 #include <functional>
@@ -18,8 +20,8 @@
 #include <vector>
 
 #include "sketchlab/config/config.hpp"
-#include "sketchlab/run/metrics.hpp"
-#include "sketchlab/run/stack.hpp"
+#include "sketchlab/lab/metrics.hpp"
+#include "sketchlab/lab/stack.hpp"
 
 namespace sketchlab {
 

@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "sketchlab/lab/stack.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
-#include "sketchlab/run/stack.hpp"
 #include "sketchlab/session.hpp"
 
 namespace sketchlab {

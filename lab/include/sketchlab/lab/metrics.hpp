@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "sketchlab/run/stack.hpp"
+#include "sketchlab/lab/stack.hpp"
 
 namespace sketchlab {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "sketchlab/run/experiment_runner.hpp"
+#include "sketchlab/lab/experiment_runner.hpp"
 
 namespace sketchlab {
 

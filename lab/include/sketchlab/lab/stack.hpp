@@ -24,8 +24,9 @@ struct StackInstance {
 // plugin names the available ones.
 StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host);
 
-// Creates the stack's input; for the replay input (the default) the `path`
-// parameter is set to `recording`.
+// Creates the stack's input (default_input_plugin when it names none); an
+// input that plays recording files (PluginDescriptor::recording_param, e.g.
+// replay's `path`) gets `recording` there.
 std::shared_ptr<Input> instantiate_input(const StackConfig& stack, const PluginHost& host,
                                          const std::filesystem::path& recording);
 

@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/plugin/corrector.hpp"
 #include "sketchlab/recording/recording.hpp"
-#include "sketchlab/run/distribution.hpp"
 
 namespace sketchlab {
 

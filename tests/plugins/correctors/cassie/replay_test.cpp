@@ -2,8 +2,8 @@
 #include <filesystem>
 #include <set>
 
+#include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
-#include "sketchlab/recording/cassie_import.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/session.hpp"
 #include "test_paths.hpp"

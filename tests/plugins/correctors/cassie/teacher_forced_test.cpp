@@ -7,9 +7,9 @@
 #include <iostream>
 #include <map>
 
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/teacher_forced.hpp"
 #include "test_paths.hpp"
 
 using namespace sketchlab;

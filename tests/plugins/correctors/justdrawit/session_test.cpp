@@ -27,7 +27,7 @@ TEST_CASE("Synthetic tablet sessions fold without errors", "[justdrawit][slow]")
   int strokes = 0;
   for (const Event& e : rec.events) {
     const StepReport r = session.handle(e);
-    if (r.event != "stroke") continue;
+    if (r.event != EventKind::stroke) continue;
     ++strokes;
     INFO("stroke " << (r.stroke ? *r.stroke : 0));
     CHECK(r.error.empty());

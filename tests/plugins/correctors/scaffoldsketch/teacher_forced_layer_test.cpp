@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "scaffoldsketch_corrector.hpp"
-#include "sketchlab/run/teacher_forced.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "test_helpers.hpp"
 
 using namespace sketchlab;

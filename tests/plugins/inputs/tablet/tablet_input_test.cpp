@@ -112,17 +112,33 @@ TEST_CASE("tablet strokes round-trip through a recording and lift onto their pla
   }
 }
 
-TEST_CASE("the tablet plugin loads and is a PointerInput", "[tablet]") {
+TEST_CASE("the tablet plugin loads and the host makes it as a PointerInput", "[tablet]") {
   PluginHost host;
   host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
-  auto input = host.make_input("tablet", {{"dpi", 120.0}});
-  REQUIRE(input);
-  auto* pointer = dynamic_cast<PointerInput*>(input.get());
+  CHECK(host.pointer_input_names() == std::vector<std::string>{"tablet"});
+  CHECK_THROWS_WITH(host.make_pointer_input("replay", {}),
+                    "input 'replay' is not a pointer input; pointer inputs: tablet");
+  const std::shared_ptr<PointerInput> pointer = host.make_pointer_input("tablet", {{"dpi", 120.0}});
   REQUIRE(pointer);
+  const std::shared_ptr<Input> input = pointer;
   pointer->pen_down({{0, 0}, 0.0, 1.0}, context_at(Layer::free));
   pointer->pen_up({{40, 0}, 0.1, 1.0});
   auto e = input->next();
   REQUIRE(e);
   CHECK(std::get<StrokeEvent>(e->payload).stroke.view->dpi == 120.0);
   CHECK(input->header().units == "px");
+}
+
+TEST_CASE("next() tells 'nothing yet' from 'ended'", "[tablet][input]") {
+  TabletInput in({});
+  CHECK(in.next().state() == NextEvent::State::not_ready);  // open, nothing drawn
+  draw_line(in, {100, 100}, {300, 120}, 1.0, 5);
+  CHECK(in.next().state() == NextEvent::State::event);
+  CHECK(in.next().state() == NextEvent::State::not_ready);
+  draw_line(in, {100, 200}, {300, 220}, 2.0, 5);
+  in.close();
+  CHECK(in.next().has_event());  // what was drawn before closing still comes out
+  CHECK(in.next().is_ended());
+  CHECK(in.next().is_ended());
+  CHECK(in.finished());
 }

@@ -6,10 +6,10 @@
 #include "build_plugin_host.hpp"
 #include "mesh_topology.hpp"
 #include "sketchlab/config/config.hpp"
+#include "sketchlab/lab/stack.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/plugin/recording_input.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
-#include "sketchlab/run/stack.hpp"
 #include "test_paths.hpp"
 
 using namespace sketchlab;
@@ -39,7 +39,7 @@ TEST_CASE("replaying a CASSIE session builds the surface once at the end", "[her
   REQUIRE(!r.steps.empty());
   for (std::size_t i = 0; i + 1 < r.steps.size(); ++i) CHECK(r.steps[i].patches_added == 0);
   const StepReport& last = r.steps.back();
-  CHECK(last.event == "recompute_surface");
+  CHECK(last.event == EventKind::recompute_surface);
   INFO(last.error);
   REQUIRE(last.error.empty());
   CHECK(last.patches_added == 1);

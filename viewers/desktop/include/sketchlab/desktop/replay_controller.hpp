@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "sketchlab/lab/stack.hpp"
 #include "sketchlab/recording/recording.hpp"
-#include "sketchlab/run/stack.hpp"
 #include "sketchlab/session.hpp"
 
 namespace sketchlab::desktop {

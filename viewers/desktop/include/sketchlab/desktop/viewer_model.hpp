@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "sketchlab/desktop/replay_controller.hpp"
-#include "sketchlab/run/live_session.hpp"
+#include "sketchlab/lab/live_session.hpp"
 
 namespace sketchlab::desktop {
 

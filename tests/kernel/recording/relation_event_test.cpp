@@ -92,7 +92,7 @@ TEST_CASE("sessions keep relation events by track and leave the sketch alone", "
   const Event c = relation(3.0, ConstraintKind::planar, {4}, {}, "designer");
   for (const Event& e : {a, b, c}) {
     const StepReport r = session.handle(e);
-    CHECK(r.event == "relation");
+    CHECK(r.event == EventKind::relation);
     CHECK(r.error.empty());
   }
   CHECK(session.sketch().network.curves().empty());

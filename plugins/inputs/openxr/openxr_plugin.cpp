@@ -23,10 +23,10 @@ class OpenXrInput : public Input {
   RecordingHeader header() const override { return header_; }
   // Waits for the controllers at most this long per call: a live input
   // returns nothing now and then, so its caller can notice a stop request.
-  std::optional<Event> next() override {
+  NextEvent next() override {
     if (pending_.empty() && !session_.ended())
       for (auto& e : session_.next_events(std::chrono::milliseconds(50))) pending_.push_back(std::move(e));
-    if (pending_.empty()) return std::nullopt;
+    if (pending_.empty()) return session_.ended() ? NextEvent::ended() : NextEvent::not_ready();
     Event e = std::move(pending_.front());
     pending_.pop_front();
     return e;

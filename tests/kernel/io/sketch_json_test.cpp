@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "sketchlab/io/sketch_json.hpp"
@@ -81,4 +82,58 @@ TEST_CASE("sketch JSON: what sketch_to_json writes reads back", "[io][sketch_jso
   const Sketch back = parse_sketch_json(text, "s.json");
   CHECK(back.network == sketch.network);
   CHECK(sketch_to_json(back) == text);
+}
+
+TEST_CASE("sketch JSON: nodes, workspace, raw stroke ids and each stroke's constraints; equal sketches, equal bytes",
+          "[io][sketch_json]") {
+  Sketch sketch;
+  sketch.workspace.grid_enabled = true;
+  sketch.workspace.grid_spacing = 0.1;
+  sketch.workspace.mirror_enabled = true;
+  sketch.workspace.mirror_normal = Vec3(0, 0, 1);
+  sketch.workspace.mirror_offset = 0.05;
+  Edit edit;
+  for (CurveId id : {1, 2}) {
+    NetworkCurve c;
+    c.id = id;
+    c.curve = id == 1 ? make_line(Vec3(0, 0, 0), Vec3(0.4, 0, 0)) : make_line(Vec3(0.2, -0.2, 0), Vec3(0.2, 0.2, 0));
+    c.keypoints = default_keypoints(c.curve);
+    c.source_stroke = 10 + id;
+    edit.curves_added.push_back(c);
+  }
+  // The two lines cross at their midpoints (t = 0.5 on each).
+  edit.nodes_added.push_back(Node{1, Vec3(0.2, 0, 0), {{1, 0.5}, {2, 0.5}}});
+  sketch.network.apply(edit);
+  sketch.strokes[11].id = 11;
+  sketch.strokes[12].id = 12;
+
+  StepReport step;
+  step.event = EventKind::stroke;
+  step.stroke = 12;
+  Constraint c;
+  c.kind = ConstraintKind::intersection;
+  c.references = {{ConstraintRef::Kind::stroke, 12, 0.5}, {ConstraintRef::Kind::curve, 1, 0.5}};
+  c.target = Vec3(0.2, 0, 0);
+  c.enforced = true;
+  c.residual = 1e-12;
+  step.constraints = {c};
+  StepReport undo = step;  // constraints of anything but a stroke are not written
+  undo.event = EventKind::undo;
+  const std::vector<StepReport> steps{step, undo};
+
+  const std::string text = sketch_to_json(sketch, &steps);
+  const auto j = nlohmann::json::parse(text);
+  CHECK(j.at("strokes") == nlohmann::json::array({11, 12}));
+  REQUIRE(j.at("constraints").size() == 1);
+  CHECK(j.at("constraints")[0].at("stroke") == 12);
+  CHECK(j.at("constraints")[0].at("constraints")[0].at("kind") == "intersection");
+  CHECK(j.at("constraints")[0].at("constraints")[0].at("residual") == 1e-12);
+  CHECK(j.at("segments").empty());  // segments run between nodes: one node per curve makes none
+
+  Sketch back = parse_sketch_json(text, "s.json");
+  CHECK(back.network == sketch.network);
+  CHECK(back.workspace == sketch.workspace);
+  CHECK(back.strokes.empty());  // the file keeps the strokes' ids, not their samples
+  back.strokes = sketch.strokes;
+  CHECK(sketch_to_json(back, &steps) == text);
 }

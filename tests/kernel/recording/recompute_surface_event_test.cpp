@@ -103,7 +103,7 @@ TEST_CASE("sessions forward recompute_surface to the surfacer as an undoable ste
   REQUIRE(s.handle(line_stroke(0.5)).error.empty());
   StepReport r = s.handle(Event{1.0, RecomputeSurfaceEvent{}});
   CHECK(r.error.empty());
-  CHECK(r.event == "recompute_surface");
+  CHECK(r.event == EventKind::recompute_surface);
   CHECK(r.patches_added == 1);
   r = s.handle(Event{2.0, RecomputeSurfaceEvent{}});
   CHECK(r.patches_added == 1);

@@ -36,8 +36,10 @@ PluginDescriptor describe() {
        "a last line without its newline (left by an interrupted write): skip it with a warning, "
        "or refuse the recording"},
   };
-  return input_descriptor<ReplayInput>("replay", "1.0", "plays a recorded session (JSON Lines)",
-                                       std::move(specs));
+  PluginDescriptor d = input_descriptor<ReplayInput>("replay", "1.0", "plays a recorded session (JSON Lines)",
+                                                     std::move(specs));
+  d.recording_param = "path";
+  return d;
 }
 
 }  // namespace

@@ -1,0 +1,37 @@
+# cmake -DPLUGIN_DIR=<dir> -DREADELF=<readelf> -P check_plugin_links.cmake
+#
+# The layer rule of docs/DESIGN.md, checked on what was built: every plugin
+# library in PLUGIN_DIR links the kernel (libsketchlab) and not the lab
+# (libsketchlab_lab), the viewers or the CLI. Fails naming the plugin and the
+# library it should not need.
+file(GLOB _plugins ${PLUGIN_DIR}/sketchlab_*.so)
+if(NOT _plugins)
+  message(FATAL_ERROR "no plugins in ${PLUGIN_DIR}")
+endif()
+set(_bad "")
+foreach(_so IN LISTS _plugins)
+  execute_process(COMMAND ${READELF} -d ${_so} OUTPUT_VARIABLE _dyn RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "${READELF} -d ${_so} failed")
+  endif()
+  get_filename_component(_name ${_so} NAME)
+  string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*\\[[^]]*\\]" _needed "${_dyn}")
+  set(_kernel OFF)
+  foreach(_n IN LISTS _needed)
+    string(REGEX REPLACE ".*\\[(.*)\\]" "\\1" _lib "${_n}")
+    if(_lib MATCHES "^libsketchlab\\.so")
+      set(_kernel ON)
+    elseif(_lib MATCHES "^libsketchlab_")
+      list(APPEND _bad "${_name} needs ${_lib}")
+    endif()
+  endforeach()
+  if(NOT _kernel)
+    list(APPEND _bad "${_name} does not link libsketchlab")
+  endif()
+endforeach()
+if(_bad)
+  list(JOIN _bad "\n  " _text)
+  message(FATAL_ERROR "plugins must link the kernel alone (docs/DESIGN.md, Layers):\n  ${_text}")
+endif()
+list(LENGTH _plugins _n)
+message(STATUS "${_n} plugins link the kernel alone")
