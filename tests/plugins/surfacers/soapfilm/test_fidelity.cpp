@@ -44,6 +44,12 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
     REQUIRE_NOTHROW(fr = soapfilm::compare_with_cassie(graph, session, params.search));
     CHECK(fr.found + fr.missed == fr.cassie_automatic);
     final += fr;
+    // Every disagreement of the replay has exactly one cause.
+    const soapfilm::ReplayFigures& rf = r.figures;
+    CHECK(rf.causes.missed_created() == rf.cassie_created - rf.matched_created);
+    CHECK(rf.causes.extra_created() == rf.ours_created - rf.matched_created);
+    CHECK(rf.causes.missed_end() == rf.cassie_final - rf.matched_final);
+    CHECK(rf.causes.extra_end() == rf.ours_final - rf.matched_final);
     replay += r.figures;
   }
   CHECK(sessions == 18);
