@@ -9,7 +9,8 @@
 //    through the surfacer, its patch creations matched with CASSIE's at the
 //    same event, and its patches at the end (cassie_replay.hpp).
 // Prints a markdown table per session and in total (Patch-system sessions,
-// the only ones where CASSIE made patches), then "name value unit" lines.
+// the only ones where CASSIE made patches), the replay's disagreements by
+// cause per session (replay_causes.hpp), then "name value unit" lines.
 // --param sets a plugin parameter (as in `sketchlab plugins soapfilm`);
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
