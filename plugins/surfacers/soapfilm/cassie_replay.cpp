@@ -94,6 +94,7 @@ ReplayFigures& ReplayFigures::operator+=(const ReplayFigures& o) {
   cassie_final += o.cassie_final;
   ours_final += o.ours_final;
   matched_final += o.matched_final;
+  causes += o.causes;
   return *this;
 }
 
@@ -123,6 +124,25 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     return a.time != b.time ? a.time < b.time : a.order < b.order;
   });
 
+  // A group: a stroke event and the patch edits up to the next one. A CASSIE
+  // automatic patch belongs to the last group at or before its time.
+  std::vector<double> group_times;
+  for (const Step& st : steps)
+    if (st.kind == "stroke" || st.kind == "delete") group_times.push_back(st.time);
+  auto group_of = [&](double t) -> std::optional<std::size_t> {
+    auto it = std::upper_bound(group_times.begin(), group_times.end(), t + 1e-4);
+    if (it == group_times.begin()) return std::nullopt;
+    return static_cast<std::size_t>(it - group_times.begin() - 1);
+  };
+  std::map<std::pair<std::size_t, StrokeSet>, int> cassie_at, ours_at;
+  for (const CassiePatch& p : session.patches)
+    if (p.automatic && p.created)
+      if (const auto g = group_of(*p.created)) ++cassie_at[{*g, p.strokes}];
+  // CASSIE's patches missed at their group, classified on our network as it
+  // is when the group ends; and how each of ours was last removed.
+  std::vector<std::pair<StrokeSet, MissingCycle>> missing;
+  std::map<StrokeSet, std::string> removed_by;
+
   auto surfacer = std::make_shared<TimedSoapfilm>(params);
   Curves curves;
   auto corrector = std::make_shared<CassieCurves>(session, options.graph, curves);
@@ -131,21 +151,22 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
   std::map<PatchId, bool> automatic;
   std::map<std::int64_t, PatchId> of_cassie;  // CASSIE manual patch -> ours made for it
   std::map<std::int64_t, StrokeId> action_of;  // CASSIE stroke -> the session stroke that added it
-  std::vector<double> group_times;
   StrokeId next_stroke = 1;
+  std::size_t groups_seen = 0;
 
-  for (const Step& st : steps) {
+  for (std::size_t step = 0; step < steps.size(); ++step) {
+    const Step& st = steps[step];
     ReplayEvent ev;
     ev.kind = st.kind;
     ev.time = st.time;
     const bool stroke_event = st.kind == "stroke" || st.kind == "delete";
     if (stroke_event) {
       ev.element = session.strokes[st.index.front()].id;
-      group_times.push_back(st.time);
+      ++groups_seen;
     } else {
       ev.element = session.patches[st.index.front()].id;
     }
-    ev.group = group_times.empty() ? 0 : group_times.size() - 1;
+    ev.group = groups_seen == 0 ? 0 : groups_seen - 1;
 
     StepReport report;
     if (st.kind == "stroke") {
@@ -213,6 +234,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       }
       if (automatic[it->first]) {
         ev.removed.push_back(it->second);
+        removed_by[it->second] = st.kind;
         ++result.figures.ours_removed;
       }
       it = ours.erase(it);
@@ -225,42 +247,73 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       automatic[it->first] = it->second.automatic;
       if (it->second.automatic) {
         ev.added.push_back(strokes);
+        ++ours_at[{ev.group, strokes}];
       } else if (st.kind == "add_patch") {
         of_cassie[ev.element] = it->first;
       }
     }
+    const bool group_ends = step + 1 == steps.size() || steps[step + 1].kind == "stroke" ||
+                            steps[step + 1].kind == "delete";
+    if (groups_seen > 0 && group_ends)
+      for (auto it = cassie_at.lower_bound({ev.group, StrokeSet{}}); it != cassie_at.end() && it->first.first == ev.group;
+           ++it) {
+        const auto o = ours_at.find(it->first);
+        const int unmatched = it->second - std::min(it->second, o == ours_at.end() ? 0 : o->second);
+        if (unmatched == 0) continue;
+        const MissingCycle why = classify_missing(net, curves.curve_of, it->first.second, params.search);
+        for (int k = 0; k < unmatched; ++k) missing.emplace_back(it->first.second, why);
+      }
     result.events.push_back(std::move(ev));
   }
 
-  // Along the way: CASSIE's automatic patches by group.
-  auto group_of = [&](double t) -> std::optional<std::size_t> {
-    auto it = std::upper_bound(group_times.begin(), group_times.end(), t + 1e-4);
-    if (it == group_times.begin()) return std::nullopt;
-    return static_cast<std::size_t>(it - group_times.begin() - 1);
-  };
-  std::map<std::pair<std::size_t, StrokeSet>, int> cassie_at, ours_at;
+  // Along the way.
   std::set<StrokeSet> ours_ever;
   for (const ReplayEvent& e : result.events)
     for (const StrokeSet& s : e.added) {
-      ++ours_at[{e.group, s}];
       ours_ever.insert(s);
       ++result.figures.ours_created;
     }
   std::set<std::int64_t> alive;
   for (const CassieStroke& s : session.strokes)
     if (!s.deleted) alive.insert(s.id);
-  std::set<StrokeSet> cassie_final;
+  std::set<StrokeSet> cassie_final, cassie_ever, by_hand;
   for (const CassiePatch& p : session.patches) {
-    if (!p.automatic || !p.created) continue;
+    if (!p.automatic) {
+      by_hand.insert(p.strokes);
+      continue;
+    }
+    if (!p.created) continue;
     ++result.figures.cassie_created;
-    if (const auto g = group_of(*p.created)) ++cassie_at[{*g, p.strokes}];
+    cassie_ever.insert(p.strokes);
     const bool all_alive = std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); });
     if (!p.deleted_by_hand && all_alive && !p.strokes.empty()) cassie_final.insert(p.strokes);
   }
+  ReplayCauses& why = result.figures.causes;
   for (const auto& [key, n] : cassie_at) {
     const int m = std::min(n, ours_at.count(key) ? ours_at.at(key) : 0);
     result.figures.matched_created += m;
     if (n > m && ours_ever.count(key.second)) result.figures.matched_elsewhere += n - m;
+  }
+  for (const auto& [strokes, cause] : missing) {
+    if (ours_ever.count(strokes)) {
+      ++why.miss_elsewhere;
+      continue;
+    }
+    switch (cause) {
+      case MissingCycle::curve_absent: ++why.miss_curve_absent; break;
+      case MissingCycle::not_found: ++why.miss_not_found; break;
+      case MissingCycle::refused_two: ++why.miss_refused_two; break;
+      case MissingCycle::not_searched: ++why.miss_not_searched; break;
+    }
+  }
+  for (const auto& [key, m] : ours_at) {
+    const auto c = cassie_at.find(key);
+    const int extra = m - std::min(m, c == cassie_at.end() ? 0 : c->second);
+    if (extra == 0) continue;
+    int& bucket = cassie_ever.count(key.second) ? why.extra_elsewhere
+                  : by_hand.count(key.second)   ? why.extra_by_hand
+                                                : why.extra_other;
+    bucket += extra;
   }
   // At the end.
   std::set<StrokeSet> ours_final;
@@ -268,7 +321,25 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     if (automatic[id]) ours_final.insert(strokes);
   result.figures.cassie_final = static_cast<int>(cassie_final.size());
   result.figures.ours_final = static_cast<int>(ours_final.size());
-  for (const StrokeSet& s : cassie_final) result.figures.matched_final += ours_final.count(s) ? 1 : 0;
+  for (const StrokeSet& s : cassie_final) {
+    if (ours_final.count(s))
+      ++result.figures.matched_final;
+    else if (!ours_ever.count(s))
+      ++why.end_never_created;
+    else if (removed_by.count(s) && removed_by.at(s) == "stroke")
+      ++why.end_removed_by_crossing;
+    else
+      ++why.end_removed_other;
+  }
+  for (const StrokeSet& s : ours_final) {
+    if (cassie_final.count(s)) continue;
+    if (by_hand.count(s))
+      ++why.end_extra_by_hand;
+    else if (cassie_ever.count(s))
+      ++why.end_extra_cassie_gone;
+    else
+      ++why.end_extra_other;
+  }
   return result;
 }
 

@@ -19,6 +19,7 @@
 
 #include "cassie_graph_edit.hpp"
 #include "cassie_session.hpp"
+#include "replay_causes.hpp"
 #include "soapfilm_params.hpp"
 
 namespace sketchlab::soapfilm {
@@ -42,6 +43,7 @@ struct ReplayFigures {
   // At the end: CASSIE's automatic patches not deleted by hand whose strokes
   // are all alive, vs our automatic patches alive (unique stroke sets).
   int cassie_final = 0, ours_final = 0, matched_final = 0;
+  ReplayCauses causes;  // one cause per disagreement above (replay_causes.hpp)
   double recall_created() const { return cassie_created ? double(matched_created) / cassie_created : 0.0; }
   double precision_created() const { return ours_created ? double(matched_created) / ours_created : 0.0; }
   double recall_final() const { return cassie_final ? double(matched_final) / cassie_final : 0.0; }

@@ -9,7 +9,8 @@
 //    through the surfacer, its patch creations matched with CASSIE's at the
 //    same event, and its patches at the end (cassie_replay.hpp).
 // Prints a markdown table per session and in total (Patch-system sessions,
-// the only ones where CASSIE made patches), then "name value unit" lines.
+// the only ones where CASSIE made patches), the replay's disagreements by
+// cause per session (replay_causes.hpp), then "name value unit" lines.
 // --param sets a plugin parameter (as in `sketchlab plugins soapfilm`);
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
@@ -191,6 +192,24 @@ int main(int argc, char** argv) {
             << ratio(total_replay.matched_final, total_replay.cassie_final) << " | "
             << ratio(total_replay.matched_final, total_replay.ours_final) << " |\n\n";
 
+  // The replay's disagreements by cause (replay_causes.hpp), Patch sessions.
+  std::cout << "| session | missed at creation: made at another event | a curve absent | no walk closes over it "
+               "| refused: a segment bounds two | walk closes, not made | extra at creation: CASSIE's at another event "
+               "| CASSIE's user added it | other | missed at the end: broken by a crossing | removed otherwise "
+               "| never created | extra at the end: CASSIE's user added it | CASSIE's deleted or gone | other |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  auto causes_row = [](const std::string& name, const ReplayCauses& c) {
+    std::cout << "| " << name << " | " << c.miss_elsewhere << " | " << c.miss_curve_absent << " | " << c.miss_not_found
+              << " | " << c.miss_refused_two << " | " << c.miss_not_searched << " | " << c.extra_elsewhere << " | "
+              << c.extra_by_hand << " | " << c.extra_other << " | " << c.end_removed_by_crossing << " | "
+              << c.end_removed_other << " | " << c.end_never_created << " | " << c.end_extra_by_hand << " | "
+              << c.end_extra_cassie_gone << " | " << c.end_extra_other << " |\n";
+  };
+  for (const Row& r : rows)
+    if (r.system == 2 && r.replay_error.empty()) causes_row(r.session, r.replay.causes);
+  causes_row("**total**", total_replay.causes);
+  std::cout << "\n";
+
   auto line = [](const std::string& n, double v, const char* unit) { std::cout << n << ' ' << v << ' ' << unit << '\n'; };
   line("final.cassie_automatic", total_final.cassie_automatic, "patches");
   line("final.found", total_final.found, "patches");
@@ -206,6 +225,21 @@ int main(int argc, char** argv) {
   line("replay.precision_created", total_replay.precision_created(), "1");
   line("replay.recall_final", total_replay.recall_final(), "1");
   line("replay.precision_final", total_replay.precision_final(), "1");
+  const ReplayCauses& why = total_replay.causes;
+  line("replay.miss_elsewhere", why.miss_elsewhere, "patches");
+  line("replay.miss_curve_absent", why.miss_curve_absent, "patches");
+  line("replay.miss_not_found", why.miss_not_found, "patches");
+  line("replay.miss_refused_two", why.miss_refused_two, "patches");
+  line("replay.miss_not_searched", why.miss_not_searched, "patches");
+  line("replay.extra_elsewhere", why.extra_elsewhere, "patches");
+  line("replay.extra_by_hand", why.extra_by_hand, "patches");
+  line("replay.extra_other", why.extra_other, "patches");
+  line("replay.end_removed_by_crossing", why.end_removed_by_crossing, "patches");
+  line("replay.end_removed_other", why.end_removed_other, "patches");
+  line("replay.end_never_created", why.end_never_created, "patches");
+  line("replay.end_extra_by_hand", why.end_extra_by_hand, "patches");
+  line("replay.end_extra_cassie_gone", why.end_extra_cassie_gone, "patches");
+  line("replay.end_extra_other", why.end_extra_other, "patches");
   const Distribution cpu = distribution(event_cpu), wall = distribution(event_wall), mesh = distribution(mesh_cpu);
   line("replay.event_cpu_p50", cpu.median, "ms");
   line("replay.event_cpu_p95", cpu.p95, "ms");

@@ -17,10 +17,11 @@ struct SoapfilmParams {
   PatchMeshParams mesh;
   // m, boundary sampling = target edge length (CASSIE app, item 27: 0.02 m).
   double edge_length = 0.02;
-  // Boundary samples per patch at most: bounds one patch's mesh to ~150
-  // vertices, the per-patch meshing CPU p95 <= 5 ms target on the bundled
-  // sessions (README.md); cycles longer than 40 x 2 cm get a coarser spacing.
-  int max_boundary_points = 40;
+  // Boundary samples per patch at most: bounds one patch's mesh to ~120
+  // vertices, for the per-patch meshing CPU p95 <= 5 ms target (on
+  // vintage_car end to end: 4.7-5.0 ms at 40, 3.4 ms at 36; README.md,
+  // Benchmarks); cycles longer than 36 x 2 cm get a coarser spacing.
+  int max_boundary_points = 36;
 };
 
 std::vector<ParamSpec> soapfilm_param_specs();

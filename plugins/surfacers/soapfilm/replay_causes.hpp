@@ -1,0 +1,55 @@
+#pragma once
+// Why the replay of a CASSIE session (cassie_replay.hpp) disagrees with
+// CASSIE's patch log: each CASSIE automatic patch we did not create at its
+// event, each one alive in CASSIE's log at the end but not ours, and each of
+// our patches CASSIE did not make, is given one cause. The counts are what
+// the README's breakdown table prints (soapfilm_compare).
+#include <map>
+
+#include "cassie_session.hpp"
+#include "cycle_search.hpp"
+
+namespace sketchlab::soapfilm {
+
+// A CASSIE automatic patch missing at the end of the event group where
+// CASSIE made it, seen on our network at that moment (checked in this order).
+enum class MissingCycle {
+  curve_absent,  // one of its strokes has no curve in our network
+  not_found,     // no walk from any graph segment of its curves closes over exactly its strokes (item 24's walk)
+  refused_two,   // a walk closes over it, but one of its segments already bounds two patches (item 24)
+  not_searched,  // a walk closes over it and nothing refuses it: the upkeep never walked from there, or its mesh failed
+};
+
+// Classifies a missing CASSIE patch over `strokes` on `network`, whose curve
+// of each CASSIE stroke id is `curve_of` (stroke ids absent there, or curves
+// no longer in the network, are absent). Walks two ways from every graph
+// segment of the patch's curves with `params` (CycleSearcher::search_segment).
+MissingCycle classify_missing(const Network& network, const std::map<std::int64_t, CurveId>& curve_of,
+                              const StrokeSet& strokes, const CycleSearchParams& params);
+
+struct ReplayCauses {
+  // CASSIE patches not created at their event (sum = cassie_created - matched_created).
+  int miss_elsewhere = 0;  // we created the same strokes at another event
+  int miss_curve_absent = 0, miss_not_found = 0, miss_refused_two = 0, miss_not_searched = 0;
+  // Our patches CASSIE did not create at that event (sum = ours_created - matched_created).
+  int extra_elsewhere = 0;  // CASSIE made the same strokes automatically at another event
+  int extra_by_hand = 0;    // CASSIE's user added a patch over the same strokes by hand (foundByAlgo false)
+  int extra_other = 0;
+  // CASSIE patches alive in its log at the end but not ours (sum = cassie_final - matched_final).
+  int end_removed_by_crossing = 0;  // we created it; a later stroke broke it (item 25)
+  int end_removed_other = 0;        // we created it; a curve deletion or the user's patch deletion removed it
+  int end_never_created = 0;
+  // Ours alive at the end that are not in CASSIE's final set (sum = ours_final - matched_final).
+  int end_extra_by_hand = 0;  // CASSIE's user added it by hand
+  int end_extra_cassie_gone = 0;  // CASSIE made it automatically, but the user deleted it or a stroke of it is gone
+  int end_extra_other = 0;
+  int missed_created() const {
+    return miss_elsewhere + miss_curve_absent + miss_not_found + miss_refused_two + miss_not_searched;
+  }
+  int extra_created() const { return extra_elsewhere + extra_by_hand + extra_other; }
+  int missed_end() const { return end_removed_by_crossing + end_removed_other + end_never_created; }
+  int extra_end() const { return end_extra_by_hand + end_extra_cassie_gone + end_extra_other; }
+  ReplayCauses& operator+=(const ReplayCauses& o);
+};
+
+}  // namespace sketchlab::soapfilm

@@ -1,0 +1,52 @@
+// The replay's cause of a missing CASSIE patch (replay_causes.hpp), on a cube
+// drawn through the surfacer: each cause is reached by exactly the situation
+// it names.
+#include <catch2/catch.hpp>
+
+#include "replay_causes.hpp"
+#include "soapfilm_test_support.hpp"
+
+using namespace sketchlab;
+using namespace sketchlab::soapfilm_test;
+
+TEST_CASE("a missing CASSIE patch is classified by what stops it on our network", "[soapfilm]") {
+  const auto edges = cube_edges(0.2);
+  PreparedSession s(edges);
+  s.draw_all(edges.size());
+  REQUIRE(s.network().patches().size() == 6);
+  // Stroke k (1..12) drew the cube edge edges[k-1]; the replay knows curves by
+  // CASSIE stroke id the same way.
+  std::map<std::int64_t, CurveId> curve_of;
+  for (const auto& [id, c] : s.network().curves()) curve_of[c.source_stroke] = id;
+  // The bottom (z = 0) and top faces: the edges with both ends at that z.
+  soapfilm::StrokeSet bottom, top;
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const Curve& c = edges[k].curve;
+    const double z0 = c.control_points.front().z(), z1 = c.control_points.back().z();
+    if (z0 == 0.0 && z1 == 0.0) bottom.insert(static_cast<std::int64_t>(k + 1));
+    if (z0 > 0.1 && z1 > 0.1) top.insert(static_cast<std::int64_t>(k + 1));
+  }
+  REQUIRE(bottom.size() == 4);
+  REQUIRE(top.size() == 4);
+  const soapfilm::CycleSearchParams params;
+  using soapfilm::MissingCycle;
+
+  // Every edge of the face already bounds two patches (the face and a side).
+  CHECK(soapfilm::classify_missing(s.network(), curve_of, bottom, params) == MissingCycle::refused_two);
+
+  // A stroke with no curve of ours.
+  soapfilm::StrokeSet with_unknown = bottom;
+  with_unknown.insert(99);
+  CHECK(soapfilm::classify_missing(s.network(), curve_of, with_unknown, params) == MissingCycle::curve_absent);
+
+  // Two bottom and two top edges bound no face: the walks never close over them.
+  const soapfilm::StrokeSet not_a_face = {*bottom.begin(), *std::next(bottom.begin()), *top.begin(),
+                                          *std::next(top.begin())};
+  CHECK(soapfilm::classify_missing(s.network(), curve_of, not_a_face, params) == MissingCycle::not_found);
+
+  // The bottom face deleted by hand: its edges bound one patch each, a walk
+  // closes over it and nothing refuses it.
+  s.handle(DeletePatchEvent{Vec3(0.1, 0.1, 0.0)});
+  REQUIRE(s.network().patches().size() == 5);
+  CHECK(soapfilm::classify_missing(s.network(), curve_of, bottom, params) == MissingCycle::not_searched);
+}
