@@ -170,6 +170,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
           const auto it = rec.header.source.find("session");
           logs = read_cassie_constraint_logs(fs::path(o->cassie_logs) /
                                              ((it == rec.header.source.end() ? session : it->second) + ".json"));
+          add_mirrored_twin_logs(rec, logs);
         }
         const std::string cg = group == "Armature" || group == "Patch" ? "Armature+Patch" : group;
         count_causes(strokes, o->cassie_logs.empty() ? nullptr : &logs, o->near, causes[cg]);

@@ -117,6 +117,8 @@ TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind di
   CHECK(expected > 10);
   CHECK(cause_total(with_logs.output, "Armature+Patch: ") == expected);
   CHECK(with_logs.output.find("we snapped, CASSIE free: CASSIE rejected it") != std::string::npos);
+  // Mirrored twins are not in CASSIE's log: they get their twin's, reflected.
+  CHECK(with_logs.output.find("(no log of the stroke)") == std::string::npos);
   const auto without = test::run_captured(base);
   REQUIRE(without.status == 0);
   CHECK(cause_total(without.output, "Armature+Patch: ") == expected);
