@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "fidelity_causes.hpp"
 #include "plugin_arguments.hpp"
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
@@ -29,6 +30,9 @@ struct FidelityOptions {
   std::string track = "cassie";
   std::string csv_dir;
   double snap_tolerance = 1e-4;
+  bool causes = false;
+  std::string cassie_logs;
+  double near = 0.02;
 };
 
 // Directories expand to their *.jsonl files (sorted); files are kept as given.
@@ -120,6 +124,14 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
                   "and per group) into this directory");
   cmd->add_option("--snap-tolerance", o->snap_tolerance,
                   "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
+  cmd->add_flag("--causes", o->causes,
+                "Also break the ends whose snap kind differs down by cause, per group (see "
+                "app/fidelity_causes.hpp)");
+  cmd->add_option("--cassie-logs", o->cassie_logs,
+                  "CASSIE's raw_data directory: <session>.json gives the constraints CASSIE applied and "
+                  "rejected, for --causes");
+  cmd->add_option("--near", o->near,
+                  "Distance (m) within which a constraint target is an end's, for --causes (default 0.02)");
   cmd->callback([o, &exit_code] {
     const std::vector<fs::path> files = expand(o->inputs);
     PluginHost host;
@@ -137,6 +149,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, std::size_t> group_sessions;
     std::vector<TeacherForcedStroke> study, all;
     std::vector<std::string> session_rows{std::string(header_row)};
+    std::map<std::string, std::map<std::string, CauseCount>> causes;
+    std::map<std::string, std::size_t> cause_ends;
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
       const auto strokes = teacher_forced(rec, *corrector, opt);
@@ -150,6 +164,18 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       ++group_sessions[group];
       if (group == "Armature" || group == "Patch") study.insert(study.end(), strokes.begin(), strokes.end());
       all.insert(all.end(), strokes.begin(), strokes.end());
+      if (o->causes) {
+        std::map<StrokeId, CassieConstraintLog> logs;
+        if (!o->cassie_logs.empty()) {
+          const auto it = rec.header.source.find("session");
+          logs = read_cassie_constraint_logs(fs::path(o->cassie_logs) /
+                                             ((it == rec.header.source.end() ? session : it->second) + ".json"));
+          add_mirrored_twin_logs(rec, logs);
+        }
+        const std::string cg = group == "Armature" || group == "Patch" ? "Armature+Patch" : group;
+        count_causes(strokes, o->cassie_logs.empty() ? nullptr : &logs, o->near, causes[cg]);
+        cause_ends[cg] += summarize(strokes).endpoints;
+      }
     }
     std::vector<std::string> rows{std::string(header_row)};
     for (const char* name : {"Freehand", "Armature", "Patch", "showcase"})
@@ -163,6 +189,9 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::cout << "corrector " << o->corrector;
     for (const std::string& p : o->params) std::cout << " " << p;
     std::cout << "\n" << aligned(rows);
+    for (const auto& [name, counts] : causes)
+      std::cout << "\n" << name << ": " << cause_ends[name] << " ends, snap kind differs at:\n"
+                << cause_table(counts, cause_ends[name]);
     if (!o->csv_dir.empty()) {
       std::string csv;
       for (const auto* list : {&session_rows, &rows})

@@ -349,6 +349,34 @@ MirrorInference infer_mirror_plane(
   return out;
 }
 
+std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::filesystem::path& raw_data_json) {
+  const Source src{raw_data_json.string()};
+  const json raw = load_json(raw_data_json);
+  std::map<StrokeId, CassieConstraintLog> out;
+  if (!raw.is_object() || !raw.contains("allSketchedStrokes")) return out;
+  const json& strokes = src.array(raw["allSketchedStrokes"], "top level", "allSketchedStrokes");
+  for (std::size_t i = 0; i < strokes.size(); ++i) {
+    const std::string where = "allSketchedStrokes[" + std::to_string(i) + "]";
+    const json& jid = src.need(strokes[i], "id", where);
+    if (!jid.is_number_integer() || jid.get<std::int64_t>() < 0) src.fail(where, "field 'id' must be an integer >= 0");
+    CassieConstraintLog& log = out[static_cast<StrokeId>(jid.get<std::int64_t>())];
+    for (const auto& [key, list] : {std::pair{"appliedPositionConstraints", &log.applied},
+                                    std::pair{"rejectedPositionConstraints", &log.rejected}}) {
+      if (!strokes[i].contains(key)) continue;
+      const json& a = src.array(strokes[i][key], where, key);
+      for (std::size_t j = 0; j < a.size(); ++j) {
+        // Older exports log the point, newer ones {position, isIntersection, ...}.
+        const bool wrapped = a[j].is_object() && a[j].contains("position");
+        const std::string at = where + "." + key + "[" + std::to_string(j) + "]" + (wrapped ? ".position" : "");
+        const json& q = wrapped ? a[j]["position"] : a[j];
+        list->push_back({src.number(src.need(q, "x", at), at, "x"), src.number(src.need(q, "y", at), at, "y"),
+                         src.number(src.need(q, "z", at), at, "z")});
+      }
+    }
+  }
+  return out;
+}
+
 Recording import_cassie(const std::filesystem::path& sketch_history_json,
                         const std::filesystem::path& raw_data_json, const std::string& session,
                         std::vector<std::string>* warnings_out) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -89,6 +90,21 @@ void compare(const Curve& ref, const Curve& out, int n, TeacherForcedStroke& r) 
   }
   r.mean_deviation = sum / n;
   r.max_deviation = mx;
+}
+
+bool is_closed(const Curve& c) {
+  return c.closed || (c.control_points.front() - c.control_points.back()).norm() <= 1e-9;
+}
+
+void nearest_candidate(const std::vector<Constraint>& cs, const Vec3& end, TeacherForcedStroke& r, int k) {
+  r.candidate_distance[k] = std::numeric_limits<double>::infinity();
+  for (const Constraint& c : cs) {
+    if (c.kind != ConstraintKind::intersection && c.kind != ConstraintKind::grid_point &&
+        c.kind != ConstraintKind::mirror_plane)
+      continue;
+    const double d = (c.target - end).norm();
+    if (d < r.candidate_distance[k]) r.candidate_distance[k] = d, r.candidate_enforced[k] = c.enforced;
+  }
 }
 
 }  // namespace
@@ -178,6 +194,12 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
                            std::max((r0 - o0).norm(), (r1 - o1).norm());
           r.output_snap[0] = snap_kind(sketch, rev ? o1 : o0, opt.snap_tolerance);
           r.output_snap[1] = snap_kind(sketch, rev ? o0 : o1, opt.snap_tolerance);
+          r.reversed = rev;
+          r.reference_end = {r0, r1};
+          r.output_end = {rev ? o1 : o0, rev ? o0 : o1};
+          r.reference_closed = is_closed(ref->second);
+          r.output_closed = is_closed(out_curve->curve);
+          for (int k = 0; k < 2; ++k) nearest_candidate(c.constraints, r.reference_end[k], r, k);
         }
       }
       out.push_back(r);

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli_helpers.hpp"
 #include "sketchlab/io/text_file.hpp"
@@ -69,4 +71,59 @@ TEST_CASE("sketchlab fidelity takes directories and names what it cannot read", 
                                       test::source_path("data/recordings/01-2-2.jsonl") + " --corrector cassie --param lambda=2");
   CHECK(bad.status != 0);
   CHECK(bad.output.find("lambda") != std::string::npos);
+}
+
+namespace {
+
+// Ends of the session CSV whose reference and output snap kinds differ.
+std::size_t kind_mismatches(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    if (c.size() < 12 || c[2] != "1") continue;
+    n += (c[8] != c[10]) + (c[9] != c[11]);  // reference_snap0/1 vs output_snap0/1
+  }
+  return n;
+}
+
+// The "total" row's end count of the cause table following `title`.
+std::size_t cause_total(const std::string& output, const std::string& title) {
+  const std::size_t at = output.find(title);
+  if (at == std::string::npos) return 0;
+  const std::size_t total = output.find("\ntotal", at);
+  if (total == std::string::npos) return 0;
+  std::istringstream row(output.substr(total + 6));
+  std::size_t n = 0;
+  row >> n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind differs", "[app]") {
+  const fs::path dir = test::fresh_dir("fidelity_causes");
+  const std::string rec = test::source_path("data/recordings/02-2-2.jsonl");  // Patch, CASSIE logs both lists
+  const std::string base = std::string(SKETCHLAB_CLI) + " fidelity " + rec +
+                           " --corrector cassie --param mirror=plane --causes --csv-dir " + (dir / "csv").string();
+  const auto with_logs = test::run_captured(base + " --cassie-logs " + test::source_path("data/cassie/raw_data"));
+  INFO(with_logs.output);
+  REQUIRE(with_logs.status == 0);
+  const std::size_t expected = kind_mismatches(dir / "csv" / "02-2-2.csv");
+  CHECK(expected > 10);
+  CHECK(cause_total(with_logs.output, "Armature+Patch: ") == expected);
+  CHECK(with_logs.output.find("we snapped, CASSIE free: CASSIE rejected it") != std::string::npos);
+  // Mirrored twins are not in CASSIE's log: they get their twin's, reflected.
+  CHECK(with_logs.output.find("(no log of the stroke)") == std::string::npos);
+  const auto without = test::run_captured(base);
+  REQUIRE(without.status == 0);
+  CHECK(cause_total(without.output, "Armature+Patch: ") == expected);
+  CHECK(without.output.find("we snapped, CASSIE free: (no log of the stroke)") != std::string::npos);
+  const auto missing = test::run_captured(base + " --cassie-logs " + (dir / "nowhere").string());
+  CHECK(missing.status != 0);
+  CHECK(missing.output.find((dir / "nowhere" / "02-2-2.json").string()) != std::string::npos);
 }

@@ -325,3 +325,25 @@ TEST_CASE("CASSIE import errors name the file and the field", "[recording][cassi
   CHECK_THROWS_WITH(import_cassie_session(dir, "s"),
                     Catch::Contains(hist) && Catch::Contains("stroke id 7") && Catch::Contains("at least 2"));
 }
+
+TEST_CASE("CASSIE's constraint logs are read per stroke from raw_data", "[recording][cassie]") {
+  const auto logs = read_cassie_constraint_logs(cassie_dir() / "raw_data" / "chair.json");
+  CHECK(logs.size() == 174);
+  std::size_t applied = 0, rejected = 0;
+  for (const auto& [id, log] : logs) applied += log.applied.size(), rejected += log.rejected.size();
+  CHECK(applied == 257);
+  CHECK(rejected == 45);
+  const CassieConstraintLog& s4 = logs.at(4);
+  REQUIRE(s4.applied.size() == 2);
+  CHECK(s4.applied[0].isApprox(Vec3(0.125, 1.375, 0.375)));
+  REQUIRE(s4.rejected.size() == 1);
+  CHECK(s4.rejected[0].isApprox(Vec3(0.125, 1.35890317, 0.354969263)));
+
+  const std::filesystem::path dir = test::binary_path("tests/scratch/cassie_logs");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bad.json", std::ios::trunc)
+      << R"({"allSketchedStrokes":[{"id":3,"appliedPositionConstraints":[{"x":1,"y":"a","z":0}]}]})";
+  CHECK_THROWS_WITH(read_cassie_constraint_logs(dir / "bad.json"),
+                    Catch::Contains("bad.json") && Catch::Contains("appliedPositionConstraints[0]") &&
+                        Catch::Contains("'y'"));
+}

@@ -55,6 +55,7 @@ Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<d
     hp.max_fraction = params.hook_max_fraction;
     hp.min_angle = params.app_hook_angle;
     r = find_hookless_range_by_turns(pts, hp);
+    out.hook_cut = {r.first > 0, r.last + 1 < pts.size()};
   }
   out.kept = {in.indices[r.first], in.indices[r.last]};
   out.points.assign(pts.begin() + static_cast<std::ptrdiff_t>(r.first),
@@ -199,6 +200,7 @@ Preprocessed preprocess_stroke(const std::vector<Vec3>& points, const std::vecto
     hp.max_fraction = params.hook_max_fraction;
     hp.min_angle = params.hook_min_angle;
     out.kept = find_hookless_range(points, hp);
+    out.hook_cut = {out.kept.first > 0, out.kept.last + 1 < points.size()};
   }
   out.points.assign(points.begin() + static_cast<std::ptrdiff_t>(out.kept.first),
                     points.begin() + static_cast<std::ptrdiff_t>(out.kept.last) + 1);

@@ -77,22 +77,8 @@ CorrectedStroke correct_line(Context& cx, const Curve& line) {
   return cs;
 }
 
-// Items 8–16: a poly-Bézier.
-CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
-  const CassieParams& p = cx.params;
-  const Thresholds& th = cx.th;
-  const Network& net = cx.sketch.network;
-  CorrectedStroke cs;
-  std::vector<Candidate> cands = detect(cx);
-  correct_targets(cands, fitted_in, net, th.correction, p.correction_points);  // item 8
-  place_on_stroke(cands, fitted_in);
-  std::stable_sort(cands.begin(), cands.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.t_stroke < b.t_stroke; });
-  const Curve fitted = p.overlap_cut ? cut_overlaps(fitted_in, cands, net, th.overlap, p.angle) : fitted_in;  // item 9
-  assign_weights(cands, fitted, net, cx.sketch.workspace, p, th);  // item 11
-  const Binding binding = bind_to_anchors(fitted, cands, th.reuse);  // item 12
-
-  // Item 10: closure, a hard constraint in every subset.
+// Items 13–14: the search's energy settings.
+SearchSettings search_settings(const CassieParams& p, const Thresholds& th) {
   SearchSettings st;
   st.lambda = p.lambda;
   st.fidelity = p.fidelity == FidelityNorm::cassie_app ? FidelityScale{2.0 * th.delta, 0.5} : FidelityScale{};
@@ -101,58 +87,69 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   st.planar_distance = th.proximity;
   st.axis_angle = p.angle;
   st.min_edge = 1e-6 * th.delta;
+  return st;
+}
+
+// Item 10: closure, a hard constraint in every subset, unless both ends are
+// bound; with an end-tangent term when the end tangents agree.
+void set_closure(const Curve& fitted, const Binding& binding, double closure_distance, SearchSettings& st) {
   const int last = static_cast<int>(binding.curve.control_points.size()) - 1;
   bool start_bound = false, end_bound = false;
   for (int a : binding.anchor) start_bound |= a == 0, end_bound |= a == last;
   const Vec3 e0 = fitted.control_points.front(), e1 = fitted.control_points.back();
-  if (fitted.segment_count() > 1 && (e0 - e1).norm() <= th.closure && !(start_bound && end_bound)) {
+  if (fitted.segment_count() > 1 && (e0 - e1).norm() <= closure_distance && !(start_bound && end_bound)) {
     st.closure = true;
     const Vec3 d0 = tangent(fitted, 0.0), d1 = tangent(fitted, fitted.t_max());
     if (std::abs(d0.dot(d1)) > 0.5) st.closure_tangent = (d0 + (d0.dot(d1) >= 0 ? d1 : Vec3(-d1))).normalized();
   }
-  cs.closure_considered = st.closure;
+}
 
-  const SearchResult sr = greedy_search(binding, cands, st);  // items 13–15
+// The best subset's curve (item 15: only a non-finite solve keeps the fit).
+void apply_solution(Context& cx, const Curve& fitted, const Binding& binding, const SearchSettings& st,
+                    const SearchResult& sr, CorrectedStroke& cs) {
   cx.stats.subsets_tried = sr.subsets_tried;
   cx.stats.iterations = sr.levels;
   cx.stats.extra["solves"] = sr.subsets_tried;
-  cs.enforced.assign(cands.size(), false);
-  std::vector<int> anchor = binding.anchor;
-  if (sr.best.feasible) {
-    cs.curve = binding.curve;
-    cs.curve.control_points = sr.best.solve.control_points;
-    for (int i : sr.best.subset) cs.enforced[i] = true;
-    if (st.closure) {
-      cs.curve.control_points.back() = cs.curve.control_points.front();
-      cs.curve.closed = true;
-      cs.closure_enforced = true;
-    }
-    cx.stats.extra["fidelity"] = sr.best.solve.fidelity;
-    cx.stats.extra["energy"] = sr.best.energy;
-  } else {
-    cs.curve = fitted;  // only a non-finite solve falls back (item 15)
+  if (!sr.best.feasible) {
+    cs.curve = fitted;
+    return;
   }
+  cs.curve = binding.curve;
+  cs.curve.control_points = sr.best.solve.control_points;
+  for (int i : sr.best.subset) cs.enforced[i] = true;
+  if (st.closure) {
+    cs.curve.control_points.back() = cs.curve.control_points.front();
+    cs.curve.closed = true;
+    cs.closure_enforced = true;
+  }
+  cx.stats.extra["fidelity"] = sr.best.solve.fidelity;
+  cx.stats.extra["energy"] = sr.best.energy;
+}
 
-  // Item 16: dangling ends beyond the first/last intersection or plane.
-  if (p.trim_dangling) {
-    std::vector<int> joints;
-    for (std::size_t i = 0; i < cands.size(); ++i)
-      if (cs.enforced[i] && cands[i].kind != TargetKind::grid) joints.push_back(anchor[i] / 3);
-    const int k_before = cs.curve.segment_count();
-    const int removed = trim_dangling(cs.curve, joints, p.trim_fraction, th.trim);
-    const int k_after = cs.curve.segment_count();
-    if (k_after != k_before) {
-      for (std::size_t i = 0; i < cands.size(); ++i) {
-        if (anchor[i] < 0) continue;
-        anchor[i] -= 3 * removed;
-        if (anchor[i] < 0 || anchor[i] > 3 * k_after) anchor[i] = -1, cs.enforced[i] = false;
-      }
-    }
-  }
+// Item 16: dangling ends beyond the first/last enforced intersection or
+// plane; anchors shift with the removed segments, those cut away are
+// no longer enforced.
+void trim_ends(const CassieParams& p, const Thresholds& th, const std::vector<Candidate>& cands,
+               std::vector<int>& anchor, CorrectedStroke& cs) {
+  if (!p.trim_dangling) return;
+  std::vector<int> joints;
   for (std::size_t i = 0; i < cands.size(); ++i)
-    if (cs.enforced[i]) cs.placed.push_back({static_cast<int>(i), anchor[i] / 3.0});
+    if (cs.enforced[i] && cands[i].kind != TargetKind::grid) joints.push_back(anchor[i] / 3);
+  const int k_before = cs.curve.segment_count();
+  const int removed = trim_dangling(cs.curve, joints, p.trim_fraction, th.trim);
+  const int k_after = cs.curve.segment_count();
+  if (k_after == k_before) return;
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    if (anchor[i] < 0) continue;
+    anchor[i] -= 3 * removed;
+    if (anchor[i] < 0 || anchor[i] > 3 * k_after) anchor[i] = -1, cs.enforced[i] = false;
+  }
+}
 
-  // Soft terms, reported with what they left.
+// Soft terms (item 14), reported with what they left.
+void add_soft_terms(const Context& cx, const SearchResult& sr, const std::vector<Candidate>& cands,
+                    CorrectedStroke& cs) {
+  const CassieParams& p = cx.params;
   if (p.planarity && sr.best.plane_normal) {
     Constraint pc{sr.best.plane_axis >= 0 ? ConstraintKind::axis_plane : ConstraintKind::planar,
                   {cx.stroke_ref}, *sr.best.plane_normal, p.planarity_weight, false, true,
@@ -169,6 +166,34 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
     cs.soft.push_back({ConstraintKind::tangent, {cx.stroke_ref, other}, *c.tangent, p.tangent_weight, false, true,
                        line_angle(tangent(cs.curve, std::min(pl.t, cs.curve.t_max())), *c.tangent)});
   }
+}
+
+// Items 8–16: a poly-Bézier.
+CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
+  const CassieParams& p = cx.params;
+  const Thresholds& th = cx.th;
+  const Network& net = cx.sketch.network;
+  CorrectedStroke cs;
+  std::vector<Candidate> cands = detect(cx);
+  correct_targets(cands, fitted_in, net, th.correction, p.correction_points);  // item 8
+  place_on_stroke(cands, fitted_in);
+  std::stable_sort(cands.begin(), cands.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.t_stroke < b.t_stroke; });
+  const Curve fitted = p.overlap_cut ? cut_overlaps(fitted_in, cands, net, th.overlap, p.angle) : fitted_in;  // item 9
+  assign_weights(cands, fitted, net, cx.sketch.workspace, p, th);  // item 11
+  const Binding binding = bind_to_anchors(fitted, cands, th.reuse);  // item 12
+
+  SearchSettings st = search_settings(p, th);
+  set_closure(fitted, binding, th.closure, st);
+  cs.closure_considered = st.closure;
+  const SearchResult sr = greedy_search(binding, cands, st);  // items 13–15
+  cs.enforced.assign(cands.size(), false);
+  apply_solution(cx, fitted, binding, st, sr, cs);
+  std::vector<int> anchor = binding.anchor;
+  trim_ends(p, th, cands, anchor, cs);
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (cs.enforced[i]) cs.placed.push_back({static_cast<int>(i), anchor[i] / 3.0});
+  add_soft_terms(cx, sr, cands, cs);
   cs.constraints = std::move(cands);
   return cs;
 }
@@ -225,6 +250,8 @@ Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const Cass
   Context cx{stroke, sketch, params, thresholds(params, scale), false,
              {ConstraintRef::Kind::stroke, stroke.id, 0.0}, {}};
   cx.use_mirror = params.mirror != MirrorMode::off && ws.mirror_enabled && ws.mirror_normal.norm() > 0;
+  cx.stats.extra["hook_cut_start"] = pre.hook_cut[0];
+  cx.stats.extra["hook_cut_end"] = pre.hook_cut[1];
 
   CorrectedStroke cs;
   if (pre.is_line) {

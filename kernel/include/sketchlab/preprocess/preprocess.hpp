@@ -4,6 +4,7 @@
 // a G1 poly-Bézier fit with sharp corners. Defaults are CASSIE's (public
 // source; see data/cassie/README.md). Every distance threshold is a multiple
 // of δ and scales as δ(s) = δ/s with the workspace zoom s.
+#include <array>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -73,6 +74,7 @@ struct Preprocessed {
   std::vector<Vec3> points;  // the points fitted: input within `kept` (hooks cut; cassie_app: filtered)
   IndexRange kept;           // indices of the input of the first and last point kept
   bool is_line = false;
+  std::array<bool, 2> hook_cut{false, false};  // a hook was cut at the start / end
   Curve curve;  // make_line(first, last kept point) for lines, else the fit
 };
 

@@ -39,6 +39,7 @@
 //   never deleted.
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -63,6 +64,19 @@ Recording import_cassie(const std::filesystem::path& sketch_history_json,
 Recording import_cassie_session(const std::filesystem::path& dataset_dir,
                                 const std::string& session,
                                 std::vector<std::string>* warnings = nullptr);
+
+// What CASSIE logged for one stroke (raw_data allSketchedStrokes[], a point
+// or, in newer exports, an object with its position): the
+// targets of the position constraints it applied and rejected (metres).
+struct CassieConstraintLog {
+  std::vector<Vec3> applied, rejected;
+};
+
+// Reads every stroke's log from a raw_data/<session>.json, by CASSIE id.
+// Throws std::runtime_error naming the file, the element and the field for
+// malformed JSON or a missing/mistyped field; sessions without
+// allSketchedStrokes give an empty map.
+std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::filesystem::path& raw_data_json);
 
 struct GridInference {
   bool found = false;

@@ -44,6 +44,16 @@ struct TeacherForcedStroke {
   double max_deviation = 0.0;      // m, max of the same
   // Snap of each end: "" (free), "curve", "node", "grid" or "mirror".
   std::array<std::string, 2> reference_snap, output_snap;
+  // For the mismatch breakdown (fidelity --causes). Ends are indexed like the
+  // reference's; `reversed`: output end k is the output curve's end 1 - k.
+  bool reversed = false;
+  bool reference_closed = false, output_closed = false;  // ends coincide (1e-9 m) or closed
+  std::array<Vec3, 2> reference_end{Vec3::Zero(), Vec3::Zero()}, output_end{Vec3::Zero(), Vec3::Zero()};
+  // Distance (m) from reference end k to the nearest target of the output's
+  // position constraints (intersection, grid point, mirror plane; infinity if
+  // none) and whether that constraint was enforced.
+  std::array<double, 2> candidate_distance{0.0, 0.0};
+  std::array<bool, 2> candidate_enforced{false, false};
   int constraints_considered = 0, constraints_enforced = 0;
   CorrectionStats stats;
   double latency_ms = 0.0;  // wall time of Corrector::correct

@@ -1,0 +1,97 @@
+#include "fidelity_causes.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace sketchlab::cli {
+namespace {
+
+bool any_within(const std::vector<Vec3>& points, const Vec3& p, double d) {
+  return std::any_of(points.begin(), points.end(), [&](const Vec3& q) { return (q - p).norm() <= d; });
+}
+
+}  // namespace
+
+std::string mismatch_cause(const TeacherForcedStroke& r, int k, const CassieConstraintLog* log, double near) {
+  if (!r.compared || r.reference_snap[k] == r.output_snap[k]) return "";
+  if (r.reference_line != r.output_line) return "line vs Bezier";
+  if (r.output_closed && !r.reference_closed) return "we closed, CASSIE open";
+  if (r.reference_closed && !r.output_closed) return "CASSIE closed, we open";
+  const bool ref_snapped = !r.reference_snap[k].empty(), out_snapped = !r.output_snap[k].empty();
+  if (ref_snapped && out_snapped)
+    return "both snapped, other kind: CASSIE " + r.reference_snap[k] + ", we " + r.output_snap[k];
+  const int out_end = r.reversed ? 1 - k : k;  // the output curve starts where the stroke does
+  const auto hook = r.stats.extra.find(out_end == 0 ? "hook_cut_start" : "hook_cut_end");
+  const std::string moved = hook != r.stats.extra.end() && hook->second != 0.0 ? " (a hook was cut there)" : "";
+  if (ref_snapped) {
+    if (r.candidate_distance[k] > near) return "CASSIE snapped, we free: we detected none there";
+    return r.candidate_enforced[k] ? "CASSIE snapped, we free: we enforced one there, our end is off it" + moved
+                                   : "CASSIE snapped, we free: we rejected the one there";
+  }
+  if (!log) return "we snapped, CASSIE free: (no log of the stroke)";
+  if (any_within(log->rejected, r.output_end[k], near)) return "we snapped, CASSIE free: CASSIE rejected it";
+  if (any_within(log->applied, r.output_end[k], near))
+    return "we snapped, CASSIE free: CASSIE applied one there, its end is off it" + moved;
+  return "we snapped, CASSIE free: CASSIE logged none there";
+}
+
+void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, CassieConstraintLog>& logs) {
+  const Workspace& ws = recording.header.workspace;
+  if (!(ws.mirror_normal.norm() > 0)) return;
+  const Vec3 n = ws.mirror_normal.normalized();
+  const double offset = ws.mirror_offset / ws.mirror_normal.norm();
+  const auto reflect = [&](std::vector<Vec3> points) {
+    for (Vec3& p : points) p -= 2.0 * (n.dot(p) - offset) * n;
+    return points;
+  };
+  std::map<double, std::vector<StrokeId>> by_time;
+  for (const Event& e : recording.events)
+    if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) by_time[e.time].push_back(s->stroke.id);
+  for (const auto& [t, ids] : by_time) {
+    if (ids.size() != 2) continue;
+    for (int i = 0; i < 2; ++i) {
+      const auto drawn = logs.find(ids[i]);
+      if (drawn == logs.end() || logs.count(ids[1 - i])) continue;
+      const CassieConstraintLog twin{reflect(drawn->second.applied), reflect(drawn->second.rejected)};
+      logs[ids[1 - i]] = twin;
+    }
+  }
+}
+
+void count_causes(const std::vector<TeacherForcedStroke>& strokes,
+                  const std::map<StrokeId, CassieConstraintLog>* logs, double near,
+                  std::map<std::string, CauseCount>& counts) {
+  for (const TeacherForcedStroke& r : strokes) {
+    const CassieConstraintLog* log = nullptr;
+    if (logs)
+      if (const auto it = logs->find(r.stroke); it != logs->end()) log = &it->second;
+    for (int k = 0; k < 2; ++k) {
+      const std::string cause = mismatch_cause(r, k, log, near);
+      if (cause.empty()) continue;
+      CauseCount& c = counts[cause];
+      ++c.ends;
+      c.snap_disagreements += r.reference_snap[k].empty() != r.output_snap[k].empty();
+    }
+  }
+}
+
+std::string cause_table(const std::map<std::string, CauseCount>& counts, std::size_t endpoints) {
+  std::vector<std::pair<std::string, CauseCount>> rows(counts.begin(), counts.end());
+  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.second.ends > b.second.ends; });
+  std::size_t width = 5, total = 0, total_snap = 0;
+  for (const auto& [name, c] : rows) width = std::max(width, name.size()), total += c.ends, total_snap += c.snap_disagreements;
+  std::ostringstream o;
+  auto line = [&](const std::string& name, std::size_t ends, std::size_t snap) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "  %6zu  %6zu  %5.1f %%\n", ends, snap,
+                  endpoints ? 100.0 * double(ends) / double(endpoints) : 0.0);
+    o << name << std::string(width - name.size(), ' ') << buf;
+  };
+  o << "cause" << std::string(width - 5, ' ') << "    ends    snap  of ends\n";
+  for (const auto& [name, c] : rows) line(name, c.ends, c.snap_disagreements);
+  line("total", total, total_snap);
+  return o.str();
+}
+
+}  // namespace sketchlab::cli

@@ -1,0 +1,48 @@
+#pragma once
+// Breakdown of the ends where a corrector's snap kind differs from the
+// reference's (`sketchlab fidelity --causes`), by the first cause that
+// applies, so the largest differences can be traced to a rule.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sketchlab/lab/cassie_import.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
+
+namespace sketchlab::cli {
+
+// Cause of the disagreement at reference end k (0 or 1) of a compared stroke,
+// or "" when the snap kinds agree. `log` is CASSIE's constraint log of the
+// stroke (nullptr if unknown); `near` (m) is how close a constraint target
+// must be to an end to count as that end's. Causes, first that applies:
+//   line vs Bezier; we closed, CASSIE open; CASSIE closed, we open;
+//   both snapped, other kind (naming both);
+//   CASSIE snapped, we free: we detected none within `near` / we rejected
+//     the one there / we enforced one there, our end is off it;
+//   we snapped, CASSIE free: CASSIE rejected one within `near` / CASSIE
+//     applied one there, its end is off it / CASSIE logged none there.
+// "Our (its) end is off it" rows say when a hook was cut at that end of our
+// curve (the corrector's statistics hook_cut_start / hook_cut_end, which the
+// cassie corrector reports).
+std::string mismatch_cause(const TeacherForcedStroke& r, int k, const CassieConstraintLog* log, double near);
+
+// CASSIE logs only the stroke drawn, not its mirrored twin (a stroke of the
+// same creation time): gives each unlogged twin its twin's log reflected in
+// the recording's mirror plane (header workspace).
+void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, CassieConstraintLog>& logs);
+
+struct CauseCount {
+  std::size_t ends = 0;             // ends with that cause
+  std::size_t snap_disagreements = 0;  // of which snapped in one curve only
+};
+
+// Adds the causes of every compared stroke's two ends.
+void count_causes(const std::vector<TeacherForcedStroke>& strokes,
+                  const std::map<StrokeId, CassieConstraintLog>* logs, double near,
+                  std::map<std::string, CauseCount>& counts);
+
+// An aligned table: cause, ends, snap disagreements, % of `endpoints`,
+// largest first.
+std::string cause_table(const std::map<std::string, CauseCount>& counts, std::size_t endpoints);
+
+}  // namespace sketchlab::cli
