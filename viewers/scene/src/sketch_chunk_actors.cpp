@@ -10,7 +10,12 @@ namespace sketchlab::viewer {
 
 SketchChunkActors::SketchChunkActors(vtkRenderer* renderer, const SceneStyle& style,
                                      std::function<void(DrawClass, vtkActor*)> restyle)
-    : renderer_(renderer), style_(style), restyle_(std::move(restyle)) {}
+    : renderer_(renderer), style_(style), restyle_(std::move(restyle)) {
+  // As add_sketch_actors: patches behind curves behind nodes (process-wide;
+  // set before the first frame, so whatever else the viewer draws is
+  // offset the same way from the start).
+  vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
+}
 
 SketchChunkActors::~SketchChunkActors() { clear(); }
 
@@ -31,8 +36,6 @@ std::size_t SketchChunkActors::show(std::shared_ptr<const SketchGeometry> geomet
     if (it != chunks_.end() && it->second.data == data) continue;
     const vtkSmartPointer<vtkPolyData> poly = to_polydata(*data);
     if (it == chunks_.end()) {
-      // Same depth offsets as add_sketch_actors (patches behind curves behind nodes).
-      vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
       vtkSmartPointer<vtkActor> actor = make_sketch_actor(key.cls, poly, style_);
       if (restyle_) restyle_(key.cls, actor);
       actor->SetUserMatrix(matrix_);
