@@ -124,7 +124,7 @@ TEST_CASE("an event the recording refuses is reported, not fatal", "[openxr]") {
   fs::remove(rec);
 }
 
-TEST_CASE("the worker prepares each snapshot on its thread; a failing prepare is reported, the last good snapshot kept",
+TEST_CASE("the worker prepares each snapshot on its thread, and a failing prepare is reported with the last good snapshot kept",
           "[openxr]") {
   const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_prep_" + std::to_string(getpid()) + ".jsonl");
   auto live = std::make_unique<LiveSession>(RecordingHeader{},
