@@ -48,7 +48,9 @@ class CorrectionWorker {
   // worker thread (and on the constructing thread for the first one).
   using Prepare = std::function<void(SketchSnapshot&)>;
   // Runs `live` (not null); `prepare` may be empty. An exception from
-  // `prepare` is reported in problems() and that snapshot is not published.
+  // `prepare` on the worker is reported in problems() and that snapshot is
+  // not published (the previous one stays); from the first snapshot's, the
+  // constructor throws it.
   explicit CorrectionWorker(std::unique_ptr<LiveSession> live, Prepare prepare = {});
   ~CorrectionWorker();
   CorrectionWorker(const CorrectionWorker&) = delete;
