@@ -5,16 +5,20 @@
 // feedback) while the dominant hand draws strokes that a CorrectionWorker
 // corrects with the cassie stack on its own thread.
 //
-// Each time the worker finishes a correction the scene is rebuilt, as in
-// `sketchlab vr` (there, from the worker's sketch; here, from the large
-// synthetic sketch with the worker's latest constraints, so every rebuild
-// costs what it costs at 2,000 curves). Figures per frame, render thread
-// only (input, scene, both eyes): wall and thread CPU time, p50 / p95 /
-// max, separately for frames that rebuilt. Under Xvfb the GPU is Mesa's
-// llvmpipe (software), so the figures bound a GPU's from above. The frame
-// loop never waits for a correction: it only takes the latest finished
-// snapshot (`latest_wait_max`: the longest that took, a mutex and a
-// shared_ptr copy).
+// The worker's shown sketch is the large synthetic sketch plus the curves
+// the worker corrected (ids offset past it), so each correction lands in a
+// 2,000-curve scene, and the worker prepares every snapshot as in
+// `sketchlab vr` (vr::geometry_preparer: the scene's geometry updated
+// incrementally, on the worker). Each time a correction arrives the frame
+// swaps in what changed, as `sketchlab vr` does. Figures per frame, render
+// thread only (input, scene, both eyes): wall and thread CPU time, p50 /
+// p95 / max, separately for the frames that showed a new correction; and
+// what the worker's geometry update cost per snapshot (thread CPU) and
+// rebuilt (curves sampled, chunks built), and what those frames swapped
+// (chunk actors given new geometry). Under Xvfb the GPU is Mesa's llvmpipe
+// (software), so the figures bound a GPU's from above. The frame loop never
+// waits for a correction: it only takes the latest finished snapshot
+// (`latest_wait_max`: the longest that took, a mutex and a shared_ptr copy).
 //
 // Usage: xvfb-run -a build/bin/bench_vr_scene [frames=120] [curves=2000] [patches=200]
 #include <time.h>
@@ -107,13 +111,13 @@ struct Figures {
   }
 };
 
-void print(const std::string& name, std::vector<double> v) {
+void print(const std::string& name, std::vector<double> v, const std::string& unit = "ms") {
   if (v.empty()) return;
   std::sort(v.begin(), v.end());
   const auto at = [&](double q) { return v[std::min(v.size() - 1, static_cast<std::size_t>(q * v.size()))]; };
-  std::cout << name << "_p50 " << at(0.50) << " ms\n"
-            << name << "_p95 " << at(0.95) << " ms\n"
-            << name << "_max " << v.back() << " ms\n";
+  std::cout << name << "_p50 " << at(0.50) << " " << unit << "\n"
+            << name << "_p95 " << at(0.95) << " " << unit << "\n"
+            << name << "_max " << v.back() << " " << unit << "\n";
 }
 
 }  // namespace
@@ -142,14 +146,38 @@ int main(int argc, char** argv) {
     xr.start(eyes->glx_handles());
     RecordingHeader header;
     header.units = "m";
-    vr::CorrectionWorker worker(std::make_unique<LiveSession>(
-        header, std::vector<StackInstance>{instantiate_stack(config, host)}, dir / "bench.jsonl", true));
+    const Sketch big = large_sketch(curves, patches);
+    const CurveId offset = big.network.next_curve_id();
+    // Worker thread only (read after finish()).
+    std::vector<double> geometry_cpu;
+    std::vector<std::size_t> curves_sampled, chunks_built;
+    const vr::CorrectionWorker::Prepare geometry = vr::geometry_preparer(vr::vr_style());
+    const auto prepare = [&](vr::SketchSnapshot& snap) {
+      Edit drawn;
+      for (const auto& [id, nc] : snap.stacks[0].sketch.network.curves()) {
+        NetworkCurve c = nc;
+        c.id += offset;
+        drawn.curves_added.push_back(std::move(c));
+      }
+      Sketch shown = big;
+      shown.network.apply(drawn);
+      shown.strokes = snap.stacks[0].sketch.strokes;
+      snap.stacks[0].sketch = std::move(shown);
+      const double cpu0 = thread_cpu_ms();
+      geometry(snap);
+      geometry_cpu.push_back(thread_cpu_ms() - cpu0);
+      curves_sampled.push_back(snap.geometry[0]->work.curves_sampled);
+      chunks_built.push_back(snap.geometry[0]->work.chunks_built);
+    };
+    vr::CorrectionWorker worker(std::make_unique<LiveSession>(header, std::vector<StackInstance>{instantiate_stack(config, host)},
+                                                              dir / "bench.jsonl", true),
+                                prepare);
     openxr::InputSettings settings;
     settings.hand_menu = true;
     openxr::GestureInterpreter input(settings, header.workspace);
     vr::VrScene scene(eyes->renderer(), vr::vr_style(), {config.name});
-    const Sketch big = large_sketch(curves, patches);
-    std::uint64_t worker_version = 0, shown_version = 0;
+    std::uint64_t shown_version = ~std::uint64_t{0};
+    std::vector<double> swapped;
 
     Figures all, rebuilt;
     int frame = 0, corrections_shown = 0;
@@ -184,14 +212,14 @@ int main(int argc, char** argv) {
             const auto snap = worker.latest();
             latest_wait_max = std::max(
                 latest_wait_max, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before).count());
-            if (snap->version != worker_version) {
-              worker_version = snap->version;
-              vr::SketchSnapshot shown = *snap;
-              shown.stacks[0].sketch = big;
-              shown.version = ++shown_version;
-              rebuild = true;
-              ++corrections_shown;
-              scene.show(shown, input.menu_view(), seconds);
+            scene.show(*snap, input.menu_view(), seconds);
+            if (snap->version != shown_version) {
+              rebuild = shown_version != ~std::uint64_t{0};
+              shown_version = snap->version;
+              if (rebuild) {
+                ++corrections_shown;
+                swapped.push_back(static_cast<double>(scene.chunks_swapped()));
+              }
             }
             scene.update(input, f, settings.dominant, seconds);
           },
@@ -210,12 +238,21 @@ int main(int argc, char** argv) {
               << "vr_scene_curves " << big.network.curves().size() << " curves\n"
               << "vr_scene_patches " << big.network.patches().size() << " patches\n"
               << "vr_scene_frames " << frame << " frames\n"
-              << "vr_scene_corrections_shown " << corrections_shown << " rebuilds\n"
+              << "vr_scene_corrections_shown " << corrections_shown << " frames\n"
               << "vr_scene_latest_wait_max " << latest_wait_max << " ms\n";
     print("vr_scene_frame_wall", all.wall);
     print("vr_scene_frame_cpu", all.cpu);
     print("vr_scene_rebuild_frame_wall", rebuilt.wall);
     print("vr_scene_rebuild_frame_cpu", rebuilt.cpu);
+    // The first snapshot (made before the loop) builds the whole scene.
+    const auto tail = [](const auto& v) { return std::vector<double>(v.begin() + (v.empty() ? 0 : 1), v.end()); };
+    if (!geometry_cpu.empty())
+      std::cout << "vr_scene_geometry_first_cpu " << geometry_cpu.front() << " ms\n"
+                << "vr_scene_geometry_first_curves_sampled " << curves_sampled.front() << " curves\n";
+    print("vr_scene_geometry_update_cpu", tail(geometry_cpu));
+    print("vr_scene_geometry_update_curves_sampled", tail(curves_sampled), "curves");
+    print("vr_scene_geometry_update_chunks_built", tail(chunks_built), "chunks");
+    print("vr_scene_rebuild_frame_chunks_swapped", swapped, "chunks");
   } catch (const std::exception& e) {
     std::cerr << "bench_vr_scene: " << e.what() << "\n";
     fs::remove_all(dir);

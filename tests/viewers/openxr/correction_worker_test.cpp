@@ -124,4 +124,34 @@ TEST_CASE("an event the recording refuses is reported, not fatal", "[openxr]") {
   fs::remove(rec);
 }
 
+TEST_CASE("the worker prepares each snapshot on its thread, and a failing prepare is reported with the last good snapshot kept",
+          "[openxr]") {
+  const fs::path rec = fs::temp_directory_path() / ("sketchlab_worker_prep_" + std::to_string(getpid()) + ".jsonl");
+  auto live = std::make_unique<LiveSession>(RecordingHeader{},
+                                            std::vector<StackInstance>{{"fast", std::make_shared<SlowCorrector>(0), nullptr}},
+                                            rec, true);
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<std::thread::id> threads;  // read after finish()
+  vr::CorrectionWorker worker(std::move(live), [&](vr::SketchSnapshot& snap) {
+    threads.push_back(std::this_thread::get_id());
+    if (snap.stacks.at(0).sketch.network.curves().size() > 1) throw std::runtime_error("out of memory");
+    snap.geometry.push_back(std::make_shared<viewer::SketchGeometry>());
+  });
+  CHECK(worker.latest()->geometry.size() == 1);
+  worker.submit(stroke_event(1, 0.1));
+  while (worker.latest()->events < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  worker.submit(stroke_event(2, 0.2));
+  const auto last = worker.finish();
+  CHECK(last->events == 1);  // the second snapshot failed: the first stays
+  CHECK(last->geometry.size() == 1);
+  REQUIRE(worker.problems().size() == 1);
+  CHECK_THAT(worker.problems()[0], Catch::Contains("preparing the view after stroke") && Catch::Contains("out of memory"));
+  REQUIRE(threads.size() == 3);
+  CHECK(threads[0] == caller);
+  CHECK(threads[1] != caller);
+  CHECK(threads[2] == threads[1]);
+  CHECK(read_recording(rec).events.size() == 2);  // recorded all the same
+  fs::remove(rec);
+}
+
 #endif

@@ -4,7 +4,8 @@
 
 namespace sketchlab::vr {
 
-CorrectionWorker::CorrectionWorker(std::unique_ptr<LiveSession> live) : live_(std::move(live)) {
+CorrectionWorker::CorrectionWorker(std::unique_ptr<LiveSession> live, Prepare prepare)
+    : live_(std::move(live)), prepare_(std::move(prepare)) {
   if (!live_) throw std::invalid_argument("CorrectionWorker: no session");
   constraints_.resize(live_->stack_count());
   latest_ = snapshot(0);
@@ -19,6 +20,7 @@ std::shared_ptr<const SketchSnapshot> CorrectionWorker::snapshot(std::uint64_t v
   snap->strokes = strokes_;
   snap->events = live_->events_recorded();
   snap->version = version;
+  if (prepare_) prepare_(*snap);
   return snap;
 }
 
@@ -98,9 +100,15 @@ void CorrectionWorker::run() {
     }
     // Copying the sketch only when caught up keeps a backlog from growing.
     if (idle) {
-      auto snap = snapshot(++version);
-      std::lock_guard lock(mutex_);
-      latest_ = std::move(snap);
+      try {
+        auto snap = snapshot(++version);
+        std::lock_guard lock(mutex_);
+        latest_ = std::move(snap);
+      } catch (const std::exception& e) {
+        std::lock_guard lock(mutex_);
+        problems_.push_back("preparing the view after " + std::string(event_type_name(event.payload)) + " at " +
+                            std::to_string(event.time) + " s: " + e.what());
+      }
     }
   }
 }

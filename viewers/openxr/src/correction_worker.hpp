@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "sketch_geometry.hpp"
 #include "sketchlab/lab/live_session.hpp"
 
 namespace sketchlab::vr {
@@ -35,12 +37,21 @@ struct SketchSnapshot {
   std::size_t strokes = 0;            // stroke events handled (a new one: a new correction to show)
   std::size_t events = 0;
   std::uint64_t version = 0;
+  // Filled by the worker's `prepare` (the VR scene's: every stack's
+  // drawable geometry, built on the worker; see vr_scene.hpp).
+  std::vector<std::shared_ptr<const viewer::SketchGeometry>> geometry;
 };
 
 class CorrectionWorker {
  public:
-  // Runs `live` (not null).
-  explicit CorrectionWorker(std::unique_ptr<LiveSession> live);
+  // Work done on every snapshot before the render thread sees it, on the
+  // worker thread (and on the constructing thread for the first one).
+  using Prepare = std::function<void(SketchSnapshot&)>;
+  // Runs `live` (not null); `prepare` may be empty. An exception from
+  // `prepare` on the worker is reported in problems() and that snapshot is
+  // not published (the previous one stays); from the first snapshot's, the
+  // constructor throws it.
+  explicit CorrectionWorker(std::unique_ptr<LiveSession> live, Prepare prepare = {});
   ~CorrectionWorker();
   CorrectionWorker(const CorrectionWorker&) = delete;
   CorrectionWorker& operator=(const CorrectionWorker&) = delete;
@@ -59,6 +70,7 @@ class CorrectionWorker {
   void run();
   std::shared_ptr<const SketchSnapshot> snapshot(std::uint64_t version) const;
   std::unique_ptr<LiveSession> live_;
+  Prepare prepare_;
   // Worker thread only: the latest stroke's constraints per stack.
   std::vector<std::vector<Constraint>> constraints_;
   std::optional<StrokeId> stroke_;

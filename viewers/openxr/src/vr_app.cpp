@@ -101,7 +101,7 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   header.source = {{"input", "openxr"}, {"runtime", xr.runtime_name()}, {"stack", names.front()},
                    {"config", std::filesystem::absolute(options.config).string()}};
   auto live = std::make_unique<LiveSession>(header, std::move(instances), recording, options.overwrite);
-  CorrectionWorker worker(std::move(live));
+  CorrectionWorker worker(std::move(live), geometry_preparer(vr_style()));
   openxr::GestureInterpreter input(settings, header.workspace);
   input.set_stack_count(names.size());
   VrScene scene(eyes->renderer(), vr_style(), names);

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCoordinate.h>
-#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -19,106 +21,105 @@
 #include <vtkProperty2D.h>
 #include <vtkTextProperty.h>
 
-#include "sketchlab/geometry/arclength.hpp"
-
 namespace sketchlab::viewer {
 namespace {
 
-// Polylines as one vtkPolyData (points in metres).
-class PolylineBuilder {
- public:
-  void add(const std::vector<Vec3>& points) {
-    if (points.size() < 2) return;
-    const vtkIdType first = points_->GetNumberOfPoints();
-    lines_->InsertNextCell(static_cast<vtkIdType>(points.size()));
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      points_->InsertNextPoint(points[i].x(), points[i].y(), points[i].z());
-      lines_->InsertCellPoint(first + static_cast<vtkIdType>(i));
-    }
-    ++count_;
-  }
-  bool empty() const { return count_ == 0; }
-  vtkSmartPointer<vtkPolyData> build() const {
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(points_);
-    poly->SetLines(lines_);
-    return poly;
-  }
-
- private:
-  vtkNew<vtkPoints> points_;
-  vtkNew<vtkCellArray> lines_;
-  int count_ = 0;
-};
-
-vtkSmartPointer<vtkActor> make_actor(vtkPolyData* poly, const Rgb& colour) {
+vtkSmartPointer<vtkActor> actor_of(vtkPolyData* poly) {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(poly);
   mapper->ScalarVisibilityOff();
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
   return actor;
 }
 
 // Lines and dots are drawn flat: their colour is the style's colour exactly,
 // whatever their orientation to the light.
-vtkSmartPointer<vtkActor> make_line_actor(const PolylineBuilder& lines, const Rgb& colour,
-                                          double width) {
-  auto actor = make_actor(lines.build(), colour);
-  actor->GetProperty()->SetLineWidth(static_cast<float>(width));
-  actor->GetProperty()->LightingOff();
-  return actor;
-}
-
-bool finite(const Vec3& p) { return p.allFinite(); }
-
-std::vector<Vec3> stroke_points(const Stroke& stroke) {
-  std::vector<Vec3> out;
-  out.reserve(stroke.samples.size());
-  for (const Sample& s : stroke.samples)
-    if (finite(s.position)) out.push_back(s.position);
-  return out;
-}
-
-vtkSmartPointer<vtkActor> make_patch_actor(const Sketch& sketch, const SceneStyle& style) {
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetNumberOfComponents(3);
-  bool all_normals = true;
-  for (const auto& [id, patch] : sketch.network.patches()) {
-    const Mesh& mesh = patch.mesh;
-    const vtkIdType first = points->GetNumberOfPoints();
-    for (const Vec3& v : mesh.vertices) points->InsertNextPoint(v.x(), v.y(), v.z());
-    const bool has_normals = mesh.normals.size() == mesh.vertices.size();
-    all_normals = all_normals && has_normals;
-    for (std::size_t i = 0; has_normals && i < mesh.normals.size(); ++i)
-      normals->InsertNextTuple3(mesh.normals[i].x(), mesh.normals[i].y(), mesh.normals[i].z());
-    const auto n = static_cast<int>(mesh.vertices.size());
-    for (const auto& f : mesh.faces) {
-      if (std::min({f[0], f[1], f[2]}) < 0 || std::max({f[0], f[1], f[2]}) >= n) continue;
-      const vtkIdType ids[3] = {first + f[0], first + f[1], first + f[2]};
-      triangles->InsertNextCell(3, ids);
-    }
-  }
-  if (triangles->GetNumberOfCells() == 0) return nullptr;
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetPolys(triangles);
-  if (all_normals) poly->GetPointData()->SetNormals(normals);
-  auto actor = make_actor(poly, style.patch_colour);
-  // Mostly ambient so a patch reads as a tint of its colour from any side,
-  // with a little diffuse to show its shape.
-  actor->GetProperty()->SetOpacity(style.patch_opacity);
-  actor->GetProperty()->SetAmbient(0.6);
-  actor->GetProperty()->SetDiffuse(0.4);
-  actor->GetProperty()->SetSpecular(0.0);
-  actor->GetProperty()->BackfaceCullingOff();
-  return actor;
+void style_lines(vtkProperty* p, const Rgb& colour, double width) {
+  p->SetColor(colour[0], colour[1], colour[2]);
+  p->SetLineWidth(static_cast<float>(width));
+  p->LightingOff();
 }
 
 }  // namespace
+
+vtkSmartPointer<vtkPolyData> to_polydata(const DrawData& data) {
+  vtkNew<vtkFloatArray> xyz;
+  xyz->SetNumberOfComponents(3);
+  xyz->SetNumberOfTuples(static_cast<vtkIdType>(data.points.size() / 3));
+  std::copy(data.points.begin(), data.points.end(), xyz->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(xyz);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(static_cast<vtkIdType>(data.offsets.size()));
+  std::copy(data.offsets.begin(), data.offsets.end(), offsets->GetPointer(0));
+  connectivity->SetNumberOfTuples(static_cast<vtkIdType>(data.connectivity.size()));
+  std::copy(data.connectivity.begin(), data.connectivity.end(), connectivity->GetPointer(0));
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  switch (data.cells) {
+    case DrawData::Cells::vertices: poly->SetVerts(cells); break;
+    case DrawData::Cells::lines: poly->SetLines(cells); break;
+    case DrawData::Cells::triangles: poly->SetPolys(cells); break;
+  }
+  if (!data.normals.empty() && data.normals.size() == data.points.size()) {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(xyz->GetNumberOfTuples());
+    std::copy(data.normals.begin(), data.normals.end(), normals->GetPointer(0));
+    poly->GetPointData()->SetNormals(normals);
+  }
+  return poly;
+}
+
+vtkSmartPointer<vtkActor> make_sketch_actor(DrawClass cls, vtkPolyData* poly, const SceneStyle& style) {
+  auto actor = actor_of(poly);
+  vtkProperty* p = actor->GetProperty();
+  switch (cls) {
+    case DrawClass::raw_strokes:
+      style_lines(p, style.raw_stroke_colour, style.raw_stroke_width);
+      break;
+    case DrawClass::scaffold:
+      style_lines(p, style.scaffold_colour, style.scaffold_width);
+      break;
+    case DrawClass::shape:
+      style_lines(p, style.shape_colour, style.shape_width);
+      break;
+    case DrawClass::other:
+      style_lines(p, style.curve_colour, style.curve_width);
+      break;
+    case DrawClass::nodes:
+      p->SetColor(style.node_colour[0], style.node_colour[1], style.node_colour[2]);
+      // Dots sit on the curves they join: pull them towards the camera so the
+      // (wider) curve lines do not hide them.
+      actor->GetMapper()->SetRelativeCoincidentTopologyPointOffsetParameter(-1000.0);
+      p->SetPointSize(static_cast<float>(style.node_size));
+      p->LightingOff();
+      break;
+    case DrawClass::patches:
+      p->SetColor(style.patch_colour[0], style.patch_colour[1], style.patch_colour[2]);
+      // Mostly ambient so a patch reads as a tint of its colour from any side,
+      // with a little diffuse to show its shape.
+      p->SetOpacity(style.patch_opacity);
+      p->SetAmbient(0.6);
+      p->SetDiffuse(0.4);
+      p->SetSpecular(0.0);
+      p->BackfaceCullingOff();
+      break;
+  }
+  return actor;
+}
+
+bool drawn(DrawClass cls, const SceneStyle& style) {
+  switch (cls) {
+    case DrawClass::raw_strokes: return style.show_raw_strokes;
+    case DrawClass::nodes: return style.show_nodes;
+    case DrawClass::patches: return style.show_patches;
+    default: return true;
+  }
+}
 
 double curve_spacing(const Box3& bounds, const SceneStyle& style) {
   const double diagonal = bounds.isEmpty() ? 0.0 : bounds.diagonal().norm();
@@ -134,62 +135,41 @@ SceneActors add_sketch_actors(vtkRenderer* renderer, const Sketch& sketch,
   // polygons go behind lines and lines behind points (a process-wide VTK
   // setting; every sketch viewer wants it).
   vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
+  const auto actor = [&](DrawClass cls, const DrawData& data) -> vtkSmartPointer<vtkActor> {
+    if (!drawn(cls, style) || data.cell_count() == 0) return nullptr;
+    return make_sketch_actor(cls, to_polydata(data), style);
+  };
 
-  if (style.show_raw_strokes) {
-    PolylineBuilder raw;
-    auto add_stroke = [&](const Stroke& s) {
-      if (!s.samples_are_pixels) raw.add(stroke_points(s));
-    };
-    if (raw_strokes) {
-      for (const Stroke& s : *raw_strokes) add_stroke(s);
-    } else {
-      for (const auto& [id, s] : sketch.strokes) add_stroke(s);
-    }
-    if (!raw.empty())
-      actors.raw_strokes = make_line_actor(raw, style.raw_stroke_colour, style.raw_stroke_width);
+  std::vector<std::vector<Vec3>> raw;
+  if (raw_strokes) {
+    for (const Stroke& s : *raw_strokes) raw.push_back(stroke_points(s));
+  } else {
+    for (const auto& [id, s] : sketch.strokes) raw.push_back(stroke_points(s));
   }
+  std::vector<const std::vector<Vec3>*> raw_lines;
+  for (const auto& r : raw) raw_lines.push_back(&r);
+  actors.raw_strokes = actor(DrawClass::raw_strokes, polylines_data(raw_lines));
 
-  PolylineBuilder scaffold, shape, other;
+  std::vector<std::vector<Vec3>> curves;
+  curves.reserve(sketch.network.curves().size());
+  std::map<DrawClass, std::vector<const std::vector<Vec3>*>> lines;
   for (const auto& [id, nc] : sketch.network.curves()) {
-    if (nc.curve.segment_count() < 1 || !nc.curve.control_points.front().allFinite()) continue;
-    const auto points = sample_with_spacing(nc.curve, spacing);
-    if (!std::all_of(points.begin(), points.end(), finite)) continue;
-    (nc.layer == Layer::scaffold ? scaffold : nc.layer == Layer::shape ? shape : other).add(points);
+    curves.push_back(curve_points(nc.curve, spacing));
+    lines[draw_class(nc.layer)].push_back(&curves.back());
   }
-  if (!scaffold.empty())
-    actors.scaffold_curves = make_line_actor(scaffold, style.scaffold_colour, style.scaffold_width);
-  if (!other.empty())
-    actors.other_curves = make_line_actor(other, style.curve_colour, style.curve_width);
-  if (!shape.empty())
-    actors.shape_curves = make_line_actor(shape, style.shape_colour, style.shape_width);
-
-  if (style.show_nodes && !sketch.network.nodes().empty()) {
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkCellArray> vertices;
-    for (const auto& [id, node] : sketch.network.nodes()) {
-      if (!finite(node.position)) continue;
-      const vtkIdType i =
-          points->InsertNextPoint(node.position.x(), node.position.y(), node.position.z());
-      vertices->InsertNextCell(1, &i);
-    }
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(points);
-    poly->SetVerts(vertices);
-    actors.nodes = make_actor(poly, style.node_colour);
-    // Dots sit on the curves they join: pull them towards the camera so the
-    // (wider) curve lines do not hide them.
-    actors.nodes->GetMapper()->SetRelativeCoincidentTopologyPointOffsetParameter(-1000.0);
-    actors.nodes->GetProperty()->SetPointSize(static_cast<float>(style.node_size));
-    actors.nodes->GetProperty()->LightingOff();
-  }
-
-  if (style.show_patches) actors.patches = make_patch_actor(sketch, style);
+  actors.scaffold_curves = actor(DrawClass::scaffold, polylines_data(lines[DrawClass::scaffold]));
+  actors.other_curves = actor(DrawClass::other, polylines_data(lines[DrawClass::other]));
+  actors.shape_curves = actor(DrawClass::shape, polylines_data(lines[DrawClass::shape]));
+  actors.nodes = actor(DrawClass::nodes, nodes_data(sketch.network.nodes()));
+  std::vector<const Mesh*> meshes;
+  for (const auto& [id, patch] : sketch.network.patches()) meshes.push_back(&patch.mesh);
+  actors.patches = actor(DrawClass::patches, meshes_data(meshes));
 
   // Faint first, translucent last (VTK renders translucent props after the
   // opaque ones anyway; the order keeps the scene deterministic).
-  for (const auto& actor : {actors.raw_strokes, actors.scaffold_curves, actors.other_curves,
-                            actors.shape_curves, actors.nodes, actors.patches})
-    if (actor) renderer->AddActor(actor);
+  for (const auto& a : {actors.raw_strokes, actors.scaffold_curves, actors.other_curves,
+                        actors.shape_curves, actors.nodes, actors.patches})
+    if (a) renderer->AddActor(a);
   return actors;
 }
 

@@ -6,6 +6,7 @@
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
+#include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
@@ -13,6 +14,7 @@
 #include "sketchlab/sketch.hpp"
 #include "sketchlab/viewer/camera.hpp"
 #include "sketchlab/viewer/scene_style.hpp"
+#include "sketch_geometry.hpp"
 
 namespace sketchlab::viewer {
 
@@ -33,6 +35,17 @@ struct SceneActors {
 SceneActors add_sketch_actors(vtkRenderer* renderer, const Sketch& sketch,
                               const std::vector<Stroke>* raw_strokes, const SceneStyle& style,
                               double spacing);
+
+// VTK polydata of `data` (the arrays copied). VTK objects are made and
+// dropped on the render thread only (see sketch_geometry.hpp).
+vtkSmartPointer<vtkPolyData> to_polydata(const DrawData& data);
+
+// An actor drawing `poly` (not null) as `style` draws `cls`: lines flat in
+// their colour and width, nodes as dots in front of the curves, patches
+// translucent.
+vtkSmartPointer<vtkActor> make_sketch_actor(DrawClass cls, vtkPolyData* poly, const SceneStyle& style);
+// Whether `style` draws `cls` at all (raw strokes, nodes, patches can be off).
+bool drawn(DrawClass cls, const SceneStyle& style);
 
 // Curve polyline spacing for a scene of these bounds (style fraction of the
 // diagonal, with a floor for degenerate scenes).
