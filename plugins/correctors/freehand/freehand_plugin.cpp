@@ -7,6 +7,7 @@
 // with no constraints. See README.md.
 #include <numbers>
 
+#include "sketchlab/plugin/param_table.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 #include "sketchlab/session.hpp"
 
@@ -21,15 +22,39 @@ PreprocessParams freehand_system() {
   return p;
 }
 
+// `rules` picks the preprocessing the other parameters are read onto.
+struct FreehandSettings {
+  std::string rules = "cassie_app";
+  PreprocessParams preprocess = freehand_system();
+};
+
+const ParamTable<FreehandSettings>& parameters() {
+  auto pre = [](auto field) { return nested_field(&FreehandSettings::preprocess, field); };
+  static const auto table =
+      ParamTable<FreehandSettings>()
+          .choice("rules", &FreehandSettings::rules, std::vector<std::string>{"cassie_app", "sketchlab"},
+                  "cassie_app: the CASSIE app's preprocessing (input filtering, line test, corners and fit; "
+                  "reference items 1-4); sketchlab: the thesis §3.2.2 reading (kernel preprocess.hpp)")
+          .real("delta", pre(&PreprocessParams::delta), 0.001, 0.5, "m",
+                "small distance δ at zoom 1 (CASSIE default 0.02); thresholds are δ/s")
+          .real("fit_error", pre(&PreprocessParams::fit_error_factor), 0.01, 5.0, "δ",
+                "poly-Bézier fitting tolerance as a multiple of δ (CASSIE: 0.5)")
+          .real("sharp_angle", pre(&PreprocessParams::max_g1_angle), 0.05,
+                std::numbers::pi / 2, "rad", "direction turn above which a sample is a corner (π/4)")
+          .boolean("detect_lines", pre(&PreprocessParams::detect_lines),
+                   "fit straight strokes with a line")
+          .boolean("remove_hooks", pre(&PreprocessParams::remove_hooks),
+                   "cut hooks at both ends of the stroke (off: CASSIE's Freehand system keeps the raw ends)");
+  return table;
+}
+
 class FreehandCorrector : public Corrector {
  public:
   explicit FreehandCorrector(const Params& p) {
-    params_ = p.string("rules") == "cassie_app" ? freehand_system() : PreprocessParams{};
-    params_.delta = p.real("delta");
-    params_.fit_error_factor = p.real("fit_error");
-    params_.max_g1_angle = p.real("sharp_angle");
-    params_.detect_lines = p.boolean("detect_lines");
-    params_.remove_hooks = p.boolean("remove_hooks");
+    FreehandSettings s = parameters().read(p);
+    // rules=sketchlab: the same fields read onto the kernel's own defaults.
+    if (s.rules != "cassie_app") s = parameters().read(p, {s.rules, PreprocessParams{}});
+    params_ = s.preprocess;
   }
   Correction correct(const Stroke& stroke, const Sketch& sketch) override {
     Correction c;
@@ -42,25 +67,9 @@ class FreehandCorrector : public Corrector {
 };
 
 PluginDescriptor describe() {
-  const PreprocessParams d = freehand_system();
-  std::vector<ParamSpec> specs{
-      {"rules", ParamType::choice, std::string("cassie_app"), {}, {}, {"cassie_app", "sketchlab"}, "",
-       "cassie_app: the CASSIE app's preprocessing (input filtering, line test, corners and fit; "
-       "reference items 1-4); sketchlab: the thesis §3.2.2 reading (kernel preprocess.hpp)"},
-      {"delta", ParamType::real, d.delta, 0.001, 0.5, {}, "m",
-       "small distance δ at zoom 1 (CASSIE default 0.02); thresholds are δ/s"},
-      {"fit_error", ParamType::real, d.fit_error_factor, 0.01, 5.0, {}, "δ",
-       "poly-Bézier fitting tolerance as a multiple of δ (CASSIE: 0.5)"},
-      {"sharp_angle", ParamType::real, d.max_g1_angle, 0.05, std::numbers::pi / 2, {}, "rad",
-       "direction turn above which a sample is a corner (π/4)"},
-      {"detect_lines", ParamType::boolean, d.detect_lines, {}, {}, {}, "",
-       "fit straight strokes with a line"},
-      {"remove_hooks", ParamType::boolean, d.remove_hooks, {}, {}, {}, "",
-       "cut hooks at both ends of the stroke (off: CASSIE's Freehand system keeps the raw ends)"},
-  };
   return corrector_descriptor<FreehandCorrector>(
       "freehand", "1.1", "no auto-correct baseline (CASSIE's Freehand system): preprocessing and curve fitting only",
-      std::move(specs));
+      parameters().specs());
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "python_interpreter.hpp"
+#include "sketchlab/plugin/param_table.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 
 namespace {
@@ -52,17 +53,36 @@ std::string describe(const py::error_already_set& e) {
   return text;
 }
 
+struct PythonSettings {
+  std::string module = "sketchlab.snap_ends";
+  std::string class_name = "SnapEnds";
+  std::string kwargs_json = "{}";
+};
+
+const ParamTable<PythonSettings>& parameters() {
+  using S = PythonSettings;
+  static const auto table =
+      ParamTable<S>()
+          .string("module", &S::module,
+                  "the Python corrector: a .py file (relative to the working directory) or an importable module name "
+                  "(default: the example bundled with the sketchlab package)")
+          .string("class", &S::class_name,
+                  "the class in it; instantiated once per stack with `params` as keyword arguments")
+          .string("params", &S::kwargs_json, "JSON object of keyword arguments for the class");
+  return table;
+}
+
 class PythonCorrector : public Corrector {
  public:
-  explicit PythonCorrector(const Params& p)
-      : label_(p.string("module") + ":" + p.string("class")) {
-    if (p.string("module").empty())
+  explicit PythonCorrector(const Params& p) : PythonCorrector(parameters().read(p)) {}
+  explicit PythonCorrector(const PythonSettings& p) : label_(p.module + ":" + p.class_name) {
+    if (p.module.empty())
       throw ParamError("module", "python corrector: parameter 'module' is empty: give a .py file or a module name");
     python_corrector::ensure_interpreter();
     py::gil_scoped_acquire gil;
     try {
-      const py::object cls = load_module(p.string("module")).attr(p.string("class").c_str());
-      const py::object kwargs = py::module_::import("json").attr("loads")(p.string("params"));
+      const py::object cls = load_module(p.module).attr(p.class_name.c_str());
+      const py::object kwargs = py::module_::import("json").attr("loads")(p.kwargs_json);
       if (!py::isinstance<py::dict>(kwargs))
         throw ParamError("params", "python corrector " + label_ +
                                        ": parameter 'params' must be a JSON object (keyword arguments of the class)");
@@ -111,18 +131,9 @@ class PythonCorrector : public Corrector {
 };
 
 PluginDescriptor describe() {
-  std::vector<ParamSpec> specs{
-      {"module", ParamType::string, std::string("sketchlab.snap_ends"), {}, {}, {}, "",
-       "the Python corrector: a .py file (relative to the working directory) or an importable module name "
-       "(default: the example bundled with the sketchlab package)"},
-      {"class", ParamType::string, std::string("SnapEnds"), {}, {}, {}, "",
-       "the class in it; instantiated once per stack with `params` as keyword arguments"},
-      {"params", ParamType::string, std::string("{}"), {}, {}, {}, "",
-       "JSON object of keyword arguments for the class"},
-  };
   return corrector_descriptor<PythonCorrector>(
       "python", "1.0", "Runs a Python class as a corrector (correct(stroke, sketch) -> Correction or Edit)",
-      std::move(specs));
+      parameters().specs());
 }
 
 }  // namespace

@@ -3,116 +3,112 @@
 #include "scaffold_line.hpp"
 #include "shape_stroke.hpp"
 #include "sketchlab/geometry/polyline.hpp"
+#include "sketchlab/plugin/param_table.hpp"
 
 namespace sketchlab::scaffoldsketch {
 
-std::vector<ParamSpec> parameter_specs() {
-  const ScaffoldParams s;
-  const ShapeParams h;
-  const PreprocessParams p;
-  return {
-      {"point_distance", ParamType::real, s.point_distance, 0.001, 1.0, {}, "m",
-       "point–point and point–line inclusion distance at zoom 1, §4.1 eq. 1–2 (5 cm)"},
-      {"angle_threshold", ParamType::real, s.angle_threshold / degrees, 0.1, 45.0, {}, "deg",
-       "perpendicular / parallel inclusion angle, §4.1 eq. 3–4 (10°)"},
-      {"equal_length_tolerance", ParamType::real, s.equal_length_tolerance, 0.0, 1.0, {}, "",
-       "relative length difference for equal length, §4.1 eq. 5 (25 %)"},
-      {"point_point_weight", ParamType::real, s.point_point_weight, 1e-6, 1e6, {}, "",
-       "initial IRLS weight of point–point constraints, §4.1 (100)"},
-      {"other_weight", ParamType::real, s.other_weight, 1e-6, 1e6, {}, "",
-       "initial IRLS weight of the other constraints, §4.1 (1)"},
-      {"epsilon", ParamType::real, s.epsilon, 1e-20, 1e-2, {}, "",
-       "ε of eq. 7; C <= ε counts as satisfied (paper: unspecified; 1e-12)"},
-      {"max_iterations", ParamType::integer, std::int64_t{s.max_iterations}, 1, 1000, {}, "",
-       "IRLS rounds at most (paper observes 2–6)"},
-      {"tick_length", ParamType::real, s.tick_length, 0.0, 0.5, {}, "m",
-       "scaffold strokes shorter than this (at zoom 1) are ticks, §3.2 (3 cm)"},
-      {"midpoint_snapping", ParamType::boolean, s.midpoint_snapping, {}, {}, {}, "",
-       "the new line's midpoint keypoint also takes point–point constraints, §4.1"},
-      {"vertical_parallel", ParamType::boolean, s.vertical_parallel, {}, {}, {}, "",
-       "parallel-to-vertical-axis (workspace.up) candidate, §4.1 eq. 4"},
-      {"vertical_perpendicular", ParamType::boolean, s.vertical_perpendicular, {}, {}, {}, "",
-       "perpendicular-to-vertical-axis (horizontal) candidate, §4.1 eq. 3 with d = up"},
-      {"node_tolerance", ParamType::real, s.node_tolerance, 0.0, 0.01, {}, "m",
-       "a corrected end within this of a curve becomes a Node"},
-      {"point_line_reach", ParamType::choice, std::string("line"), {}, {}, {"line", "segment"}, "",
-       "point–line candidates for ends near a scaffold line's infinite extension (eq. 2, "
-       "authors) or near the segment only"},
-      {"direction_only_length", ParamType::choice, std::string("drawn"), {}, {},
-       {"drawn", "nearest"}, "",
-       "a line kept only by direction terms keeps its drawn length (authors; eq. 6's gradient) "
-       "or becomes the nearest such line (L·cos θ)"},
-      {"sample_spacing", ParamType::real, h.sample_spacing, 0.001, 0.1, {}, "m",
-       "shape stroke resampling step, §4.2.1 (1 cm)"},
-      {"keypoint_distance", ParamType::real, h.keypoint_distance, 0.001, 0.5, {}, "m",
-       "shape samples pick the nearest scaffold keypoint within this, §4.2.1 (3 cm)"},
-      {"tangent_angle", ParamType::real, h.tangent_angle / degrees, 0.0, 90.0, {}, "deg",
-       "snap a keypoint tangent to a scaffold line within this angle, §4.2.1 (25°)"},
-      {"straight_deviation", ParamType::real, h.straight_deviation, 0.0, 1.0, {}, "",
-       "PCA straightness: max distance / PCA length, §4.2.2 (8 %)"},
-      {"straight_length_tolerance", ParamType::real, h.straight_length_tolerance, 0.0, 1.0, {},
-       "", "PCA length within this fraction of the arclength, §4.2.2 (10 %)"},
-      {"samples_per_segment", ParamType::integer, std::int64_t{h.samples_per_segment}, 2, 200,
-       {}, "", "mean arclength samples per Bézier segment for eq. 8–9 (at least 2 each)"},
-      {"straight_shape", ParamType::choice, std::string("line"), {}, {}, {"line", "polyline"}, "",
-       "a straight shape stroke becomes one line between its first and last keypoints "
-       "(§4.2.2) or a polyline through every keypoint (authors)"},
-      {"tangent_sample", ParamType::choice, std::string("closest"), {}, {}, {"closest", "best"},
-       "",
-       "a keypoint's tangent is matched at the sample closest to it (§4.2.1) or best over "
-       "every sample that selected it (authors)"},
-      {"tangent_curvature", ParamType::boolean, h.tangent_curvature, {}, {}, {}, "",
-       "eq. 9 also compares, at each keypoint, the curvature of the circle tangent to its "
-       "constrained direction (no hooks); false: eq. 8 at arclength samples only"},
-      {"max_evaluations", ParamType::integer, std::int64_t{h.max_evaluations}, 10, 1000000, {},
-       "", "NLopt objective evaluations per MVC solve"},
-      {"delta", ParamType::real, p.delta, 0.001, 0.5, {}, "m",
-       "kernel preprocessing δ (line detection for automatic strokes, freehand fallback)"},
-  };
+namespace {
+
+// Everything the plugin's parameters set, one struct per stage.
+struct Settings {
+  ScaffoldParams scaffold;
+  ShapeParams shape;
+  PreprocessParams preprocess;
+};
+
+const ParamTable<Settings>& parameters() {
+  auto sc = [](auto field) { return nested_field(&Settings::scaffold, field); };
+  auto sh = [](auto field) { return nested_field(&Settings::shape, field); };
+  using S = ScaffoldParams;
+  using H = ShapeParams;
+  static const auto table =
+      ParamTable<Settings>()
+          .real("point_distance", sc(&S::point_distance), 0.001, 1.0, "m",
+                "point–point and point–line inclusion distance at zoom 1, §4.1 eq. 1–2 (5 cm)")
+          .real("angle_threshold", sc(&S::angle_threshold), 0.1, 45.0, "deg",
+                "perpendicular / parallel inclusion angle, §4.1 eq. 3–4 (10°)", degrees)
+          .real("equal_length_tolerance", sc(&S::equal_length_tolerance), 0.0, 1.0, "",
+                "relative length difference for equal length, §4.1 eq. 5 (25 %)")
+          .real("point_point_weight", sc(&S::point_point_weight), 1e-6, 1e6, "",
+                "initial IRLS weight of point–point constraints, §4.1 (100)")
+          .real("other_weight", sc(&S::other_weight), 1e-6, 1e6, "",
+                "initial IRLS weight of the other constraints, §4.1 (1)")
+          .real("epsilon", sc(&S::epsilon), 1e-20, 1e-2, "",
+                "ε of eq. 7; C <= ε counts as satisfied (paper: unspecified; 1e-12)")
+          .integer("max_iterations", sc(&S::max_iterations), 1, 1000, "",
+                   "IRLS rounds at most (paper observes 2–6)")
+          .real("tick_length", sc(&S::tick_length), 0.0, 0.5, "m",
+                "scaffold strokes shorter than this (at zoom 1) are ticks, §3.2 (3 cm)")
+          .boolean("midpoint_snapping", sc(&S::midpoint_snapping),
+                   "the new line's midpoint keypoint also takes point–point constraints, §4.1")
+          .boolean("vertical_parallel", sc(&S::vertical_parallel),
+                   "parallel-to-vertical-axis (workspace.up) candidate, §4.1 eq. 4")
+          .boolean("vertical_perpendicular", sc(&S::vertical_perpendicular),
+                   "perpendicular-to-vertical-axis (horizontal) candidate, §4.1 eq. 3 with d = up")
+          .real("node_tolerance", sc(&S::node_tolerance), 0.0, 0.01, "m",
+                "a corrected end within this of a curve becomes a Node")
+          .choice("point_line_reach", sc(&S::point_line_reach),
+                  std::vector<std::pair<std::string, PointLineReach>>{{"line", PointLineReach::line},
+                                                                      {"segment", PointLineReach::segment}},
+                  "point–line candidates for ends near a scaffold line's infinite extension (eq. 2, "
+                  "authors) or near the segment only")
+          .choice("direction_only_length", sc(&S::direction_only_length),
+                  std::vector<std::pair<std::string, DirectionOnlyLength>>{
+                      {"drawn", DirectionOnlyLength::drawn}, {"nearest", DirectionOnlyLength::nearest}},
+                  "a line kept only by direction terms keeps its drawn length (authors; eq. 6's gradient) "
+                  "or becomes the nearest such line (L·cos θ)")
+          .real("sample_spacing", sh(&H::sample_spacing), 0.001, 0.1, "m",
+                "shape stroke resampling step, §4.2.1 (1 cm)")
+          .real("keypoint_distance", sh(&H::keypoint_distance), 0.001, 0.5, "m",
+                "shape samples pick the nearest scaffold keypoint within this, §4.2.1 (3 cm)")
+          .real("tangent_angle", sh(&H::tangent_angle), 0.0, 90.0, "deg",
+                "snap a keypoint tangent to a scaffold line within this angle, §4.2.1 (25°)", degrees)
+          .real("straight_deviation", sh(&H::straight_deviation), 0.0, 1.0, "",
+                "PCA straightness: max distance / PCA length, §4.2.2 (8 %)")
+          .real("straight_length_tolerance", sh(&H::straight_length_tolerance), 0.0, 1.0, "",
+                "PCA length within this fraction of the arclength, §4.2.2 (10 %)")
+          .integer("samples_per_segment", sh(&H::samples_per_segment), 2, 200, "",
+                   "mean arclength samples per Bézier segment for eq. 8–9 (at least 2 each)")
+          .choice("straight_shape", sh(&H::straight_shape),
+                  std::vector<std::pair<std::string, StraightShape>>{{"line", StraightShape::line},
+                                                                     {"polyline", StraightShape::polyline}},
+                  "a straight shape stroke becomes one line between its first and last keypoints "
+                  "(§4.2.2) or a polyline through every keypoint (authors)")
+          .choice("tangent_sample", sh(&H::tangent_sample),
+                  std::vector<std::pair<std::string, TangentSample>>{{"closest", TangentSample::closest},
+                                                                     {"best", TangentSample::best}},
+                  "a keypoint's tangent is matched at the sample closest to it (§4.2.1) or best over "
+                  "every sample that selected it (authors)")
+          .boolean("tangent_curvature", sh(&H::tangent_curvature),
+                   "eq. 9 also compares, at each keypoint, the curvature of the circle tangent to its "
+                   "constrained direction (no hooks); false: eq. 8 at arclength samples only")
+          .integer("max_evaluations", sh(&H::max_evaluations), 10, 1000000, "",
+                   "NLopt objective evaluations per MVC solve")
+          .real("delta", nested_field(&Settings::preprocess, &PreprocessParams::delta), 0.001, 0.5, "m",
+                "kernel preprocessing δ (line detection for automatic strokes, freehand fallback)");
+  return table;
 }
 
+}  // namespace
+
+std::vector<ParamSpec> parameter_specs() { return parameters().specs(); }
+
 ScaffoldSketchCorrector::ScaffoldSketchCorrector(const Params& p) {
-  scaffold_.point_distance = p.real("point_distance");
-  scaffold_.angle_threshold = p.real("angle_threshold") * degrees;
-  scaffold_.equal_length_tolerance = p.real("equal_length_tolerance");
-  scaffold_.point_point_weight = p.real("point_point_weight");
-  scaffold_.other_weight = p.real("other_weight");
-  scaffold_.epsilon = p.real("epsilon");
-  scaffold_.max_iterations = static_cast<int>(p.integer("max_iterations"));
-  scaffold_.tick_length = p.real("tick_length");
-  scaffold_.midpoint_snapping = p.boolean("midpoint_snapping");
-  scaffold_.vertical_parallel = p.boolean("vertical_parallel");
-  scaffold_.vertical_perpendicular = p.boolean("vertical_perpendicular");
-  scaffold_.node_tolerance = p.real("node_tolerance");
-  scaffold_.point_line_reach =
-      p.string("point_line_reach") == "line" ? PointLineReach::line : PointLineReach::segment;
-  scaffold_.direction_only_length = p.string("direction_only_length") == "drawn"
-                                        ? DirectionOnlyLength::drawn
-                                        : DirectionOnlyLength::nearest;
-  shape_.sample_spacing = p.real("sample_spacing");
-  shape_.keypoint_distance = p.real("keypoint_distance");
-  shape_.tangent_angle = p.real("tangent_angle") * degrees;
-  shape_.straight_deviation = p.real("straight_deviation");
-  shape_.straight_length_tolerance = p.real("straight_length_tolerance");
-  shape_.samples_per_segment = static_cast<int>(p.integer("samples_per_segment"));
-  shape_.straight_shape =
-      p.string("straight_shape") == "line" ? StraightShape::line : StraightShape::polyline;
-  shape_.tangent_sample =
-      p.string("tangent_sample") == "closest" ? TangentSample::closest : TangentSample::best;
-  shape_.tangent_curvature = p.boolean("tangent_curvature");
-  shape_.max_evaluations = static_cast<int>(p.integer("max_evaluations"));
-  preprocess_.delta = p.real("delta");
-  // Automatic strokes are lines by shape alone (chord/length >= 0.98):
-  // imported sessions carry synthetic sample times, so the speed test of
-  // CASSIE's line detection would reject every stroke.
-  preprocess_.line_min_speed = 0;
+  const Settings s = parameters().read(p);
+  scaffold_ = s.scaffold;
+  shape_ = s.shape;
+  preprocess_ = s.preprocess;
+  preprocess_.line_min_speed = 0;  // see the constructor below
 }
 
 ScaffoldSketchCorrector::ScaffoldSketchCorrector(const ScaffoldParams& scaffold,
                                                  const ShapeParams& shape,
                                                  const PreprocessParams& preprocess)
     : scaffold_(scaffold), shape_(shape), preprocess_(preprocess) {
-  preprocess_.line_min_speed = 0;  // see the constructor above
+  // Automatic strokes are lines by shape alone (chord/length >= 0.98):
+  // imported sessions carry synthetic sample times, so the speed test of
+  // CASSIE's line detection would reject every stroke.
+  preprocess_.line_min_speed = 0;
 }
 
 Correction ScaffoldSketchCorrector::correct(const Stroke& stroke, const Sketch& sketch) {
