@@ -2,6 +2,7 @@
 // workspace changes, references). The whole file is read and checked when the
 // input is created, so a malformed recording fails before anything runs,
 // with file:line.
+#include "sketchlab/plugin/param_table.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 #include "sketchlab/plugin/recording_input.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
@@ -10,12 +11,31 @@ namespace {
 
 using namespace sketchlab;
 
+struct ReplaySettings {
+  std::string path;
+  std::int64_t max_events = -1;
+  bool refuse_truncated = false;
+};
+
+const ParamTable<ReplaySettings>& parameters() {
+  using R = ReplaySettings;
+  static const auto table =
+      ParamTable<R>()
+          .string("path", &R::path, "recording file (JSON Lines) to play")
+          .integer("max_events", &R::max_events, -1, {}, "", "stop after this many events (-1: play all)")
+          .choice("partial_last_line", &R::refuse_truncated,
+                  std::vector<std::pair<std::string, bool>>{{"skip", false}, {"refuse", true}},
+                  "a last line without its newline (left by an interrupted write): skip it with a warning, "
+                  "or refuse the recording");
+  return table;
+}
+
 // The whole file is read (and checked) up front; max_events truncates it.
-Recording read_truncated(const Params& p) {
+Recording read_truncated(const ReplaySettings& settings) {
   RecordingReadOptions options;
-  options.refuse_truncated = p.string("partial_last_line") == "refuse";
-  Recording recording = read_recording(p.string("path"), options);
-  const auto limit = p.integer("max_events");
+  options.refuse_truncated = settings.refuse_truncated;
+  Recording recording = read_recording(settings.path, options);
+  const auto limit = settings.max_events;
   if (limit >= 0 && static_cast<std::size_t>(limit) < recording.events.size())
     recording.events.resize(static_cast<std::size_t>(limit));
   return recording;
@@ -23,21 +43,12 @@ Recording read_truncated(const Params& p) {
 
 class ReplayInput : public RecordingInput {
  public:
-  explicit ReplayInput(const Params& p) : RecordingInput(read_truncated(p)) {}
+  explicit ReplayInput(const Params& p) : RecordingInput(read_truncated(parameters().read(p))) {}
 };
 
 PluginDescriptor describe() {
-  std::vector<ParamSpec> specs{
-      {"path", ParamType::string, std::string(), {}, {}, {}, "",
-       "recording file (JSON Lines) to play"},
-      {"max_events", ParamType::integer, std::int64_t{-1}, -1, {}, {}, "",
-       "stop after this many events (-1: play all)"},
-      {"partial_last_line", ParamType::choice, std::string("skip"), {}, {}, {"skip", "refuse"}, "",
-       "a last line without its newline (left by an interrupted write): skip it with a warning, "
-       "or refuse the recording"},
-  };
   PluginDescriptor d = input_descriptor<ReplayInput>("replay", "1.0", "plays a recorded session (JSON Lines)",
-                                                     std::move(specs));
+                                                     parameters().specs());
   d.recording_param = "path";
   return d;
 }
