@@ -10,6 +10,7 @@
 // It is the example of docs/plugin-authoring.md (built out of tree against
 // the installed SDK), and the C++ reference the Python snap_ends corrector
 // (python/sketchlab/snap_ends.py) must reproduce bit for bit.
+#include "sketchlab/plugin/param_table.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 #include "sketchlab/session.hpp"
 
@@ -17,9 +18,20 @@ namespace {
 
 using namespace sketchlab;
 
+struct SnapEndsSettings {
+  double radius = 0.02;  // m at zoom 1
+};
+
+const ParamTable<SnapEndsSettings>& parameters() {
+  static const auto table = ParamTable<SnapEndsSettings>().real(
+      "radius", &SnapEndsSettings::radius, 1e-4, 1.0, "m",
+      "snap distance at zoom 1 (CASSIE's δ = 0.02); divided by the stroke's workspace zoom");
+  return table;
+}
+
 class SnapEndsCorrector : public Corrector {
  public:
-  explicit SnapEndsCorrector(const Params& p) : radius_(p.real("radius")) {}
+  explicit SnapEndsCorrector(const Params& p) : radius_(parameters().read(p).radius) {}
 
   Correction correct(const Stroke& stroke, const Sketch& sketch) override {
     Correction c;
@@ -64,13 +76,9 @@ class SnapEndsCorrector : public Corrector {
 };
 
 PluginDescriptor describe() {
-  std::vector<ParamSpec> specs{
-      {"radius", ParamType::real, 0.02, 1e-4, 1.0, {}, "m",
-       "snap distance at zoom 1 (CASSIE's δ = 0.02); divided by the stroke's workspace zoom"},
-  };
   return corrector_descriptor<SnapEndsCorrector>(
       "snap_ends", "1.0", "Freehand fit, then each end within radius of a curve snaps onto it",
-      std::move(specs));
+      parameters().specs());
 }
 
 }  // namespace
