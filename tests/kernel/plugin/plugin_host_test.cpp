@@ -66,7 +66,8 @@ TEST_CASE("the fixture directory: the good plugins load, each broken one is repo
   }
   // Sorted by file name; the throwing plugins load (they fail only when used).
   CHECK(loaded == std::vector<std::string>{"correct_throws", "factory_throws", "good"});
-  CHECK(host.errors().size() == 5);
+  // Five broken here, ten from descriptor_defect.cpp (next test case).
+  CHECK(host.errors().size() == 15);
 
   CHECK(reason_for(host, fixture("wrong_abi")) ==
         "built for ABI 7, host has " + std::to_string(plugin_abi_version));
@@ -81,6 +82,33 @@ TEST_CASE("the fixture directory: the good plugins load, each broken one is repo
   CHECK(reason_for(host, fixture("bad_default")) ==
         "invalid default: parameter 'delta': 0.5 is out of range; allowed: real in [0.001, 0.2] "
         "(m)");
+}
+
+TEST_CASE("each check of a plugin's header and descriptor refuses it with its own reason", "[plugin]") {
+  // One fixture per check (tests/fixtures/plugins/descriptor_defect.cpp), in
+  // the order the host makes them.
+  const std::vector<std::pair<std::string, std::string>> expected{
+      {"entry_throws", "entry point threw: no describing today"},
+      {"null_header", "entry point returned no header"},
+      {"no_fingerprint", "header has no build fingerprint"},
+      {"no_descriptor", "header has no descriptor"},
+      {"no_factory", "descriptor has no factory for its kind (corrector)"},
+      {"pointer_on_corrector", "a pointer input factory on a non-input plugin"},
+      {"bad_recording_param", "recording_param 'path' is not a string parameter of an input"},
+      {"empty_param_name", "a parameter has an empty name"},
+      {"duplicate_param", "parameter 'delta' is declared twice"},
+      {"empty_choice", "choice parameter 'mode' has no choices"},
+  };
+  for (const auto& [name, reason] : expected) {
+    INFO(name);
+    PluginHost host;
+    CHECK_FALSE(host.load_file(fixture(name)));
+    CHECK(host.plugins().empty());
+    CHECK(reason_for(host, fixture(name)) == reason);
+    // A refused plugin cannot be made: the error says why it did not load.
+    CHECK_THROWS_WITH(host.make_corrector(name, {}),
+                      Catch::Contains("did not load: " + reason));
+  }
 }
 
 TEST_CASE("a file that is not a library is refused before the loader sees it", "[plugin]") {
