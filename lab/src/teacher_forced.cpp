@@ -11,6 +11,8 @@
 #include <time.h>
 
 #include "sketchlab/geometry/arclength.hpp"
+#include "sketchlab/network_curve.hpp"
+#include "sketchlab/network_nodes.hpp"
 
 namespace sketchlab {
 namespace {
@@ -28,36 +30,13 @@ struct Pending {
 void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>& curve_of) {
   constexpr double tol = 1e-5;
   Edit e;
-  NetworkCurve nc;
-  nc.id = sketch.network.next_curve_id();
-  nc.curve = p.curve;
-  nc.layer = p.layer;
-  nc.source_stroke = p.stroke;
-  nc.keypoints = default_keypoints(p.curve);
-  e.curves_added.push_back(nc);
+  const CurveId id = sketch.network.next_curve_id();
+  e.curves_added.push_back(make_network_curve(id, p.curve, p.layer, p.stroke));
   NodeId next = sketch.network.next_node_id();
-  std::map<NodeId, Node> replaced;
-  for (int k = 0; k <= p.curve.segment_count(); ++k) {
-    const Vec3 q = p.curve.control_points[3 * k];
-    const auto hits = sketch.network.curves_near(q, tol);
-    if (hits.empty()) continue;
-    const auto nodes = sketch.network.nodes_near(q, tol);
-    if (!nodes.empty()) {
-      const NodeId id = nodes.front().node;
-      if (!replaced.count(id)) replaced[id] = *sketch.network.find_node(id);
-      replaced[id].incidences.push_back({nc.id, static_cast<double>(k)});
-      continue;
-    }
-    Node n;
-    n.id = next++;
-    n.position = q;
-    n.incidences.push_back({nc.id, static_cast<double>(k)});
-    for (const CurveHit& h : hits) n.incidences.push_back({h.curve, h.t});
-    e.nodes_added.push_back(n);
-  }
-  for (auto& [id, n] : replaced) e.nodes_replaced.push_back(n);
+  for (int k = 0; k <= p.curve.segment_count(); ++k)
+    connect_point(sketch.network, p.curve.control_points[3 * k], id, k, tol, e, next);
   sketch.network.apply(e);
-  curve_of[p.stroke] = nc.id;
+  curve_of[p.stroke] = id;
 }
 
 std::string snap_kind(const Sketch& sketch, const Vec3& p, double tol) {

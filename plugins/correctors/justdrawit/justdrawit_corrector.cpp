@@ -19,6 +19,7 @@
 #include "new_curve_placement.hpp"
 #include "scratch.hpp"
 #include "sketchlab/draw_plane.hpp"
+#include "sketchlab/network_diff.hpp"
 #include "stroke_scene.hpp"
 
 namespace sketchlab::justdrawit {
