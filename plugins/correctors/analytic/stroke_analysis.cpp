@@ -2,13 +2,13 @@
 
 #include <cmath>
 
-#include "camera.hpp"
 #include "curve_inference.hpp"
 #include "ellipse_snap.hpp"
 #include "guideline.hpp"
 #include "line_inference.hpp"
-#include "sketchlab/network_curve.hpp"
 #include "stroke_2d.hpp"
+#include "sketchlab/camera.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::analytic {
 
