@@ -58,7 +58,7 @@ TEST_CASE("edit_between lists only what differs, in id order", "[network][diff]"
                                                    Layer::shape, 4));
   Patch p;
   p.id = from.next_patch_id();
-  p.boundary = {OrientedSegment{first.id, 0.0, first.curve.t_max(), 0, 0}};
+  p.boundary = {OrientedSegment{first.id, 0.0, first.curve.t_max(), 1, 1}};
   p.mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   p.mesh.faces = {{0, 1, 2}};
   change.patches_added.push_back(p);
