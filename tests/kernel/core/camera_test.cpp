@@ -6,28 +6,14 @@
 #include <random>
 #include <stdexcept>
 
+#include "kernel/core/perspective_view.hpp"
 #include "sketchlab/camera.hpp"
 
 using namespace sketchlab;
 
-namespace {
-
-constexpr double fovy = std::numbers::pi / 3.0;
-
-View make_view(const Vec3& eye, const Vec3& target) {
-  View v;
-  v.view = look_at(eye, target, Vec3::UnitY());
-  v.projection = perspective(fovy, 1.5, 0.1, 100.0);
-  v.viewport = Vec4(10, 20, 1200, 800);
-  return v;
-}
-
-double distance_to_ray(const Ray& r, const Vec3& p) {
-  const Vec3 d = p - r.origin;
-  return (d - d.dot(r.direction) * r.direction).norm();
-}
-
-}  // namespace
+using test::distance_to_ray;
+using test::make_view;
+constexpr double fovy = test::test_fovy;
 
 TEST_CASE("Camera projects and casts rays as view.hpp does", "[camera]") {
   std::mt19937_64 rng(99);
