@@ -1,23 +1,32 @@
 #include "sketchlab/network_diff.hpp"
 
+#include <map>
+#include <vector>
+
 namespace sketchlab {
+namespace {
+
+// Items of `to` missing from `from` (added) or different (replaced), in id
+// order, then ids of `from` missing from `to` (removed).
+template <class Id, class Item>
+void diff_items(const std::map<Id, Item>& from, const std::map<Id, Item>& to, std::vector<Item>& added,
+                std::vector<Item>& replaced, std::vector<Id>& removed) {
+  for (const auto& [id, item] : to) {
+    const auto old = from.find(id);
+    if (old == from.end()) added.push_back(item);
+    else if (!(old->second == item)) replaced.push_back(item);
+  }
+  for (const auto& [id, item] : from)
+    if (!to.count(id)) removed.push_back(id);
+}
+
+}  // namespace
 
 Edit edit_between(const Network& from, const Network& to) {
   Edit e;
-  for (const auto& [id, c] : to.curves()) {
-    const NetworkCurve* old = from.find_curve(id);
-    if (!old) e.curves_added.push_back(c);
-    else if (!(*old == c)) e.curves_replaced.push_back(c);
-  }
-  for (const auto& [id, c] : from.curves())
-    if (!to.find_curve(id)) e.curves_removed.push_back(id);
-  for (const auto& [id, n] : to.nodes()) {
-    const Node* old = from.find_node(id);
-    if (!old) e.nodes_added.push_back(n);
-    else if (!(*old == n)) e.nodes_replaced.push_back(n);
-  }
-  for (const auto& [id, n] : from.nodes())
-    if (!to.find_node(id)) e.nodes_removed.push_back(id);
+  diff_items(from.curves(), to.curves(), e.curves_added, e.curves_replaced, e.curves_removed);
+  diff_items(from.nodes(), to.nodes(), e.nodes_added, e.nodes_replaced, e.nodes_removed);
+  // A patch has no replacement: one that differs is removed and added again.
   for (const auto& [id, p] : from.patches()) {
     const auto it = to.patches().find(id);
     if (it == to.patches().end() || !(it->second == p)) e.patches_removed.push_back(id);
