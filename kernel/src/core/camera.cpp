@@ -22,7 +22,9 @@ Camera::Camera(const View& view) : view_(view) {
   const Mat3 r = view.view.topLeftCorner<3, 3>();
   right_ = r.row(0).transpose().normalized();
   up_ = r.row(1).transpose().normalized();
-  forward_ = -r.row(2).transpose().normalized();
+  // The eye's -z axis in world space, computed as JustDrawIt always has
+  // (-r.row(2) gives other last bits for some views, and so other sketches).
+  forward_ = (r.transpose() * Vec3(0, 0, -1)).normalized();
 }
 
 std::optional<Vec2> Camera::project(const Vec3& world) const {
