@@ -12,7 +12,6 @@
 
 #include "sketchlab/geometry/arclength.hpp"
 #include "sketchlab/network_curve.hpp"
-#include "sketchlab/network_nodes.hpp"
 
 namespace sketchlab {
 namespace {
@@ -32,9 +31,31 @@ void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>
   Edit e;
   const CurveId id = sketch.network.next_curve_id();
   e.curves_added.push_back(make_network_curve(id, p.curve, p.layer, p.stroke));
+  // Not connect_point: a joint at an existing node adds only this curve's
+  // incidence there (connect_point also adds every other curve within the
+  // tolerance), and two joints never share a new node. Through connect_point
+  // the fidelity figures move (all: snap agreement 84.0 -> 83.9 %).
   NodeId next = sketch.network.next_node_id();
-  for (int k = 0; k <= p.curve.segment_count(); ++k)
-    connect_point(sketch.network, p.curve.control_points[3 * k], id, k, tol, e, next);
+  std::map<NodeId, Node> replaced;
+  for (int k = 0; k <= p.curve.segment_count(); ++k) {
+    const Vec3 q = p.curve.control_points[3 * k];
+    const auto hits = sketch.network.curves_near(q, tol);
+    if (hits.empty()) continue;
+    const auto nodes = sketch.network.nodes_near(q, tol);
+    if (!nodes.empty()) {
+      const NodeId n = nodes.front().node;
+      if (!replaced.count(n)) replaced[n] = *sketch.network.find_node(n);
+      replaced[n].incidences.push_back({id, static_cast<double>(k)});
+      continue;
+    }
+    Node n;
+    n.id = next++;
+    n.position = q;
+    n.incidences.push_back({id, static_cast<double>(k)});
+    for (const CurveHit& h : hits) n.incidences.push_back({h.curve, h.t});
+    e.nodes_added.push_back(n);
+  }
+  for (auto& [n, node] : replaced) e.nodes_replaced.push_back(node);
   sketch.network.apply(e);
   curve_of[p.stroke] = id;
 }
