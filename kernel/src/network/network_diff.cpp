@@ -1,6 +1,8 @@
 #include "sketchlab/network_diff.hpp"
 
+#include <algorithm>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace sketchlab {
@@ -26,6 +28,24 @@ Edit edit_between(const Network& from, const Network& to) {
   Edit e;
   diff_items(from.curves(), to.curves(), e.curves_added, e.curves_replaced, e.curves_removed);
   diff_items(from.nodes(), to.nodes(), e.nodes_added, e.nodes_replaced, e.nodes_removed);
+  // Network::apply drops a node whose every incidence is on a removed curve
+  // (before it replaces nodes): such a node of both networks is added again.
+  const std::set<CurveId> gone(e.curves_removed.begin(), e.curves_removed.end());
+  const auto dropped = [&](const Node& n) {
+    const Node& old = *from.find_node(n.id);
+    return std::all_of(old.incidences.begin(), old.incidences.end(),
+                       [&](const NodeIncidence& i) { return gone.count(i.curve) > 0; });
+  };
+  for (auto it = e.nodes_replaced.begin(); it != e.nodes_replaced.end();) {
+    if (!dropped(*it)) {
+      ++it;
+      continue;
+    }
+    const auto at = std::lower_bound(e.nodes_added.begin(), e.nodes_added.end(), it->id,
+                                     [](const Node& n, NodeId id) { return n.id < id; });
+    e.nodes_added.insert(at, std::move(*it));
+    it = e.nodes_replaced.erase(it);
+  }
   // A patch has no replacement: one that differs is removed and added again.
   for (const auto& [id, p] : from.patches()) {
     const auto it = to.patches().find(id);

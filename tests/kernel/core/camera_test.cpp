@@ -51,13 +51,15 @@ TEST_CASE("Camera axes, film plane, pixel size and vanishing points", "[camera]"
   for (double z : {1.0, 5.0, 20.0})
     CHECK(cam.world_per_pixel(Vec3(0, 0, 5 - z)) == Approx(2 * z * std::tan(fovy / 2) / 800).epsilon(1e-9));
   CHECK(cam.world_per_pixel(Vec3(0, 0, 6)) == 1.0);  // behind the eye
-  // The vanishing point of a direction is where far points along it go.
+  // The vanishing point of a direction is where every line along it goes:
+  // the pixel of the eye's own line, and the limit of far points.
   const Vec3 d = Vec3(1, 0.5, -2).normalized();
   const auto vp = cam.vanishing_point(d);
   REQUIRE(vp);
+  CHECK((*vp - *cam.project(eye + d)).norm() < 1e-9);
   const auto far = cam.project(Vec3(0.1, 0.2, 0) + 1e6 * d);
   REQUIRE(far);
-  CHECK((*vp - *far).norm() < 1e-3);
+  CHECK((*vp - *far).norm() < 1e-2);
   CHECK_FALSE(cam.vanishing_point(Vec3(1, 0, 0)));  // parallel to the image plane
   // The centre of the viewport looks straight ahead.
   CHECK((*cam.project(Vec3(0, 0, -3)) - Vec2(10 + 600, 20 + 400)).norm() < 1e-9);
