@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "scaffoldsketch_corrector.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/sketch.hpp"
 
 using namespace sketchlab;
@@ -41,13 +42,9 @@ Stroke line_stroke(StrokeId id, const Vec3& a, const Vec3& b, Layer layer) {
 }
 
 void add_line(Sketch& sketch, const Vec3& a, const Vec3& b) {
-  NetworkCurve c;
-  c.id = sketch.network.next_curve_id();
-  c.curve = make_line(a, b);
-  c.layer = Layer::scaffold;
-  c.keypoints = default_keypoints(c.curve);
   Edit e;
-  e.curves_added.push_back(c);
+  e.curves_added.push_back(
+      make_network_curve(sketch.network.next_curve_id(), make_line(a, b), Layer::scaffold));
   sketch.network.apply(e);
 }
 

@@ -18,6 +18,7 @@
 #include "patch_mesh.hpp"
 #include "patch_upkeep.hpp"
 #include "sketchlab/lab/distribution.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "soapfilm_surfacer.hpp"
 
 namespace {
@@ -59,12 +60,10 @@ void add_tile(Edit& e, const Tile& tile, CurveId& next_curve, NodeId& next_node)
   std::vector<CurveId> xs, ys;
   for (int dir = 0; dir < 2; ++dir)
     for (int i = 0; i < lines; ++i) {
-      NetworkCurve nc;
-      nc.id = next_curve++;
       const double off = (dir == 0 ? tile.y0 : tile.x0) + i * step;
       const double from = dir == 0 ? tile.x0 : tile.y0;
-      nc.curve = grid_curve(dir, off, from, from + size, lines - 1);
-      nc.keypoints = default_keypoints(nc.curve);
+      NetworkCurve nc =
+          make_network_curve(next_curve++, grid_curve(dir, off, from, from + size, lines - 1), Layer::free);
       (dir == 0 ? xs : ys).push_back(nc.id);
       e.curves_added.push_back(std::move(nc));
     }
@@ -137,11 +136,9 @@ void run(int curves, const soapfilm::SoapfilmParams& params) {
   for (int k = 0; k < edits; ++k) {
     const Tile& tile = placed[static_cast<std::size_t>(k * tiles / edits)];
     Edit add;
-    NetworkCurve c;
-    c.id = sketch.network.next_curve_id();
     const double x = tile.x0 + 0.5 * step;
-    c.curve = grid_curve(1, x, tile.y0, tile.y0 + size, lines - 1);
-    c.keypoints = default_keypoints(c.curve);
+    const NetworkCurve c = make_network_curve(sketch.network.next_curve_id(),
+                                              grid_curve(1, x, tile.y0, tile.y0 + size, lines - 1), Layer::free);
     add.curves_added.push_back(c);
     NodeId id = sketch.network.next_node_id();
     // The x-curves of this tile: ids in order of creation.

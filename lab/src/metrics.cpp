@@ -13,6 +13,7 @@
 #include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/geometry/hausdorff.hpp"
 #include "sketchlab/lab/distribution.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/view.hpp"
 
 namespace sketchlab {
@@ -234,12 +235,9 @@ void reference_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMetri
     for (StrokeId s : strokes_with_curves(sketch)) {
       auto it = curves.find(s);
       if (it == curves.end()) continue;
-      NetworkCurve nc;
-      nc.id = ref.next_curve_id() + add.curves_added.size();
-      nc.curve = it->second;
-      nc.source_stroke = s;
-      ref_id[s] = nc.id;
-      add.curves_added.push_back(std::move(nc));
+      const CurveId id = ref.next_curve_id() + add.curves_added.size();
+      ref_id[s] = id;
+      add.curves_added.push_back(make_network_curve(id, it->second, Layer::free, s));
     }
     ref.apply(add);
     double endpoint = 0, control = 0;

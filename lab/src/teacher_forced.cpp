@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "sketchlab/geometry/arclength.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab {
 namespace {
@@ -28,13 +29,12 @@ struct Pending {
 void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>& curve_of) {
   constexpr double tol = 1e-5;
   Edit e;
-  NetworkCurve nc;
-  nc.id = sketch.network.next_curve_id();
-  nc.curve = p.curve;
-  nc.layer = p.layer;
-  nc.source_stroke = p.stroke;
-  nc.keypoints = default_keypoints(p.curve);
-  e.curves_added.push_back(nc);
+  const CurveId id = sketch.network.next_curve_id();
+  e.curves_added.push_back(make_network_curve(id, p.curve, p.layer, p.stroke));
+  // Not connect_point: a joint at an existing node adds only this curve's
+  // incidence there (connect_point also adds every other curve within the
+  // tolerance), and two joints never share a new node. Through connect_point
+  // the fidelity figures move (all: snap agreement 84.0 -> 83.9 %).
   NodeId next = sketch.network.next_node_id();
   std::map<NodeId, Node> replaced;
   for (int k = 0; k <= p.curve.segment_count(); ++k) {
@@ -43,21 +43,21 @@ void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>
     if (hits.empty()) continue;
     const auto nodes = sketch.network.nodes_near(q, tol);
     if (!nodes.empty()) {
-      const NodeId id = nodes.front().node;
-      if (!replaced.count(id)) replaced[id] = *sketch.network.find_node(id);
-      replaced[id].incidences.push_back({nc.id, static_cast<double>(k)});
+      const NodeId n = nodes.front().node;
+      if (!replaced.count(n)) replaced[n] = *sketch.network.find_node(n);
+      replaced[n].incidences.push_back({id, static_cast<double>(k)});
       continue;
     }
     Node n;
     n.id = next++;
     n.position = q;
-    n.incidences.push_back({nc.id, static_cast<double>(k)});
+    n.incidences.push_back({id, static_cast<double>(k)});
     for (const CurveHit& h : hits) n.incidences.push_back({h.curve, h.t});
     e.nodes_added.push_back(n);
   }
-  for (auto& [id, n] : replaced) e.nodes_replaced.push_back(n);
+  for (auto& [n, node] : replaced) e.nodes_replaced.push_back(node);
   sketch.network.apply(e);
-  curve_of[p.stroke] = nc.id;
+  curve_of[p.stroke] = id;
 }
 
 std::string snap_kind(const Sketch& sketch, const Vec3& p, double tol) {

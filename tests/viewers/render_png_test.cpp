@@ -8,6 +8,7 @@
 #include <string>
 
 #include "scenes.hpp"
+#include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/viewer/display.hpp"
 #include "sketchlab/viewer/png_image.hpp"
 #include "sketchlab/viewer/render_png.hpp"
@@ -163,6 +164,38 @@ TEST_CASE("a translucent patch tints the pixels inside its projection only", "[v
   // The boundary curves still read dark over the patch.
   const Vec2 edge = project(cam, Vec3(0.0, -0.4, 0.0), 0, w, h);
   CHECK(dark_near(b, edge.x(), edge.y()));
+}
+
+TEST_CASE("a patch with vertex normals draws the same from sketch.json as from memory", "[viewer]") {
+  ensure_display();
+  Sketch shaded = square_sketch(0.4, true);
+  // Normals bent away from the plane's, as a surfacer's smooth shading gives:
+  // the lighting, and so the pixels, depend on them.
+  Patch p = shaded.network.patches().at(1);
+  p.mesh.normals = {Vec3(-0.6, -0.3, 0.7).normalized(), Vec3(0.6, -0.3, 0.7).normalized(),
+                    Vec3(0.6, 0.3, 0.7).normalized(), Vec3(-0.6, 0.3, 0.7).normalized()};
+  Edit swap;
+  swap.patches_removed = {1};
+  swap.patches_added = {p};
+  shaded.network.apply(swap);
+  const Sketch read_back = parse_sketch_json(sketch_to_json(shaded), "sketch.json");
+  Sketch flat = shaded;  // what reading a file without normals used to give
+  p.mesh.normals.clear();
+  swap.patches_added = {p};
+  flat.network.apply(swap);
+
+  const Camera cam = oblique_camera();
+  const int w = 200, h = 150;
+  const auto png_memory = out_dir() / "normals_memory.png";
+  const auto png_file = out_dir() / "normals_file.png";
+  const auto png_flat = out_dir() / "normals_flat.png";
+  viewer::render_png({Panel{"", &shaded, nullptr, ""}}, cam, w, h, png_memory, exact_style());
+  viewer::render_png({Panel{"", &read_back, nullptr, ""}}, cam, w, h, png_file, exact_style());
+  viewer::render_png({Panel{"", &flat, nullptr, ""}}, cam, w, h, png_flat, exact_style());
+  const RgbImage memory = viewer::read_png(png_memory), file = viewer::read_png(png_file),
+                 without = viewer::read_png(png_flat);
+  CHECK(file.pixels == memory.pixels);
+  CHECK(without.pixels != memory.pixels);
 }
 
 TEST_CASE("nodes are drawn as dots in the node colour", "[viewer]") {

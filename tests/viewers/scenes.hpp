@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/sketch.hpp"
 #include "sketchlab/viewer/camera.hpp"
 #include "sketchlab/viewer/png_image.hpp"
@@ -11,12 +12,7 @@
 namespace sketchlab::test {
 
 inline NetworkCurve line_curve(CurveId id, const Vec3& a, const Vec3& b, Layer layer) {
-  NetworkCurve nc;
-  nc.id = id;
-  nc.curve = make_line(a, b);
-  nc.layer = layer;
-  nc.keypoints = default_keypoints(nc.curve);
-  return nc;
+  return make_network_curve(id, make_line(a, b), layer);
 }
 
 // One straight shape curve from a to b.

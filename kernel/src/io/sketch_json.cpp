@@ -59,11 +59,20 @@ ojson constraint_to_json(const Constraint& c) {
                {"residual", c.residual}};
 }
 
+// Vertex normals (a surfacer's shading) only when the mesh has them, so
+// files of meshes without normals are the bytes they were before normals
+// were written.
 ojson mesh_to_json(const Mesh& m) {
   ojson v = ojson::array(), f = ojson::array();
   for (const auto& p : m.vertices) v.push_back(to_json(p));
   for (const auto& t : m.faces) f.push_back({t[0], t[1], t[2]});
-  return ojson{{"vertices", v}, {"faces", f}};
+  ojson out{{"vertices", v}, {"faces", f}};
+  if (!m.normals.empty()) {
+    ojson n = ojson::array();
+    for (const auto& p : m.normals) n.push_back(to_json(p));
+    out["normals"] = n;
+  }
+  return out;
 }
 
 Vec3 vec3_from(const json& j, const std::string& what) {
@@ -259,6 +268,15 @@ Sketch parse_sketch_json(std::string_view text_in, const std::string& name) {
                                         " outside [0, " + std::to_string(vertices) + ")");
         }
         patch.mesh.faces.push_back({face[0], face[1], face[2]});
+      }
+      // Optional (files written before normals were kept have none).
+      if (mesh.contains("normals")) {
+        for (const json& n : list(mesh, "normals", what))
+          patch.mesh.normals.push_back(vec3_from(n, what + ".normals"));
+        if (patch.mesh.normals.size() != patch.mesh.vertices.size())
+          throw std::invalid_argument(what + ".normals: " + std::to_string(patch.mesh.normals.size()) +
+                                      " normals for " + std::to_string(vertices) +
+                                      " vertices (one per vertex, or the key left out)");
       }
       edit.patches_added.push_back(std::move(patch));
     }

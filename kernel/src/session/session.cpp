@@ -9,6 +9,7 @@
 
 #include "sketchlab/draw_plane.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/recording/event_json.hpp"
 
 namespace sketchlab {
@@ -79,14 +80,10 @@ SurfaceUpdate guarded_surfacer(F&& call) {
 }  // namespace
 
 Edit freehand_edit(const Stroke& stroke, const Sketch& sketch, const PreprocessParams& params) {
-  NetworkCurve curve;
-  curve.id = sketch.network.next_curve_id();
-  curve.curve = preprocess_stroke(stroke, params).curve;
-  curve.layer = stroke.layer == Layer::automatic ? Layer::free : stroke.layer;
-  curve.source_stroke = stroke.id;
-  curve.keypoints = default_keypoints(curve.curve);
   Edit edit;
-  edit.curves_added.push_back(std::move(curve));
+  edit.curves_added.push_back(make_network_curve(sketch.network.next_curve_id(),
+                                                 preprocess_stroke(stroke, params).curve,
+                                                 curve_layer(stroke.layer), stroke.id));
   return edit;
 }
 

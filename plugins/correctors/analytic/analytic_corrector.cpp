@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "scaffold.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/network_nodes.hpp"

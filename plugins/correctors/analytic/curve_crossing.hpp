@@ -4,7 +4,7 @@
 // curve at the crossing is a position constraint C° for a stroke endpoint.
 #include <vector>
 
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "sketchlab/curve.hpp"
 
 namespace sketchlab::analytic {

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/sketch.hpp"
 #include "sketchlab/view.hpp"
 
@@ -86,11 +87,7 @@ inline std::vector<Vec3> segment(const Vec3& a, const Vec3& b) { return {a, b}; 
 
 // Adds a curve to the network directly (scaffold built by hand).
 inline CurveId add_curve(Sketch& sketch, const Curve& c, Layer layer) {
-  NetworkCurve nc;
-  nc.id = sketch.network.next_curve_id();
-  nc.curve = c;
-  nc.layer = layer;
-  nc.keypoints = default_keypoints(c);
+  const NetworkCurve nc = make_network_curve(sketch.network.next_curve_id(), c, layer);
   Edit e;
   e.curves_added.push_back(nc);
   sketch.network.apply(e);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analytic_params.hpp"
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "scaffold.hpp"
 #include "sketchlab/constraint.hpp"
 #include "stroke_2d.hpp"

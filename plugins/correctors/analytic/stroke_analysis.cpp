@@ -2,25 +2,17 @@
 
 #include <cmath>
 
-#include "camera.hpp"
 #include "curve_inference.hpp"
 #include "ellipse_snap.hpp"
 #include "guideline.hpp"
 #include "line_inference.hpp"
 #include "stroke_2d.hpp"
+#include "sketchlab/camera.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::analytic {
 
 namespace {
-
-NetworkCurve network_curve(const Curve& c, Layer layer, StrokeId stroke) {
-  NetworkCurve nc;
-  nc.curve = c;
-  nc.layer = layer;
-  nc.source_stroke = stroke;
-  nc.keypoints = default_keypoints(c);
-  return nc;
-}
 
 ConstraintRef stroke_ref(StrokeId id, double t) {
   ConstraintRef r;
@@ -97,7 +89,8 @@ StrokeOutcome analyse_stroke(const Stroke& stroke, const Scaffold& s, const Sket
       double len = 2.0 * s.extent;
       while (len > 1e-9 && !cam.project(g->origin + len * g->direction)) len *= 0.5;
       out.kind = StrokeOutcome::Kind::guideline;
-      out.added.push_back(network_curve(make_line(g->origin, g->origin + len * g->direction), Layer::guide, stroke.id));
+      out.added.push_back(make_network_curve(0, make_line(g->origin, g->origin + len * g->direction),
+                                             Layer::guide, stroke.id));
       out.stats["guideline"] = 1;
       out.stats["image_parallel"] = g->image_parallel ? 1 : 0;
       return out;
@@ -138,7 +131,8 @@ StrokeOutcome analyse_stroke(const Stroke& stroke, const Scaffold& s, const Sket
       const Vec3 origin = sketch.workspace.grid_origin;
       if (const auto seg = ground_plane_segment(cam, ends, up, origin)) {
         out.kind = StrokeOutcome::Kind::line;
-        out.added.push_back(network_curve(make_line(seg->first, seg->second), Layer::scaffold, stroke.id));
+        out.added.push_back(
+            make_network_curve(0, make_line(seg->first, seg->second), Layer::scaffold, stroke.id));
         Constraint k;
         k.kind = ConstraintKind::axis_plane;
         k.references.push_back(stroke_ref(stroke.id, 0));
@@ -166,7 +160,8 @@ StrokeOutcome analyse_stroke(const Stroke& stroke, const Scaffold& s, const Sket
       return out;
     }
     out.kind = StrokeOutcome::Kind::line;
-    out.added.push_back(network_curve(make_line(li.best->segment.first, li.best->segment.second), Layer::scaffold, stroke.id));
+    out.added.push_back(make_network_curve(0, make_line(li.best->segment.first, li.best->segment.second),
+                                           Layer::scaffold, stroke.id));
     out.constraints = describe_triplet(li.best->triplet, li.candidates, s, stroke.id, li.best->segment, true);
     if (li.runner_up) {
       auto r = describe_triplet(li.runner_up->triplet, li.candidates, s, stroke.id, li.runner_up->segment, false);
@@ -215,7 +210,7 @@ StrokeOutcome analyse_stroke(const Stroke& stroke, const Scaffold& s, const Sket
     }
   }
   out.kind = StrokeOutcome::Kind::curve;
-  out.added.push_back(network_curve(curve, Layer::shape, stroke.id));
+  out.added.push_back(make_network_curve(0, curve, Layer::shape, stroke.id));
   out.constraints = describe_curve(ci, *ci.best, s, stroke.id, p, true);
   if (snapped) {
     Constraint k;

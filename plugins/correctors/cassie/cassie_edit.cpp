@@ -5,6 +5,7 @@
 
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::cassie {
 namespace {
@@ -37,12 +38,7 @@ Correction build_correction(const Stroke& stroke, const Sketch& sketch, const Co
   const Workspace& ws = sketch.workspace;
   const Curve& result = cs.curve;
   const CurveId new_id = sketch.network.next_curve_id();
-  NetworkCurve nc;
-  nc.id = new_id;
-  nc.curve = result;
-  nc.layer = stroke.layer == Layer::automatic ? Layer::free : stroke.layer;
-  nc.source_stroke = stroke.id;
-  nc.keypoints = default_keypoints(result);
+  const NetworkCurve nc = make_network_curve(new_id, result, curve_layer(stroke.layer), stroke.id);
   out.edit.curves_added.push_back(nc);
   bool copy = false;
   if (copy_wanted && cs.mirror_copy) {

@@ -6,6 +6,7 @@
 
 #include "default_normals.hpp"
 #include "network_curves.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::justdrawit {
 
@@ -50,18 +51,10 @@ void add_edit(Outcome& o, const Built& built, Decision decision, const SceneItem
   const double d = ctx.d;
   // The edit: a new curve, or the replacement of one curve (and removal of
   // the second when two are combined).
-  NetworkCurve nc;
-  nc.curve = polyline_curve(built.pts, built.closed);
-  nc.layer = stroke.layer == Layer::automatic ? Layer::free : stroke.layer;
-  nc.source_stroke = stroke.id;
-  if (item_a) {
-    const NetworkCurve* old = net.find_curve(item_a->id);
-    nc.id = old->id;
-    nc.layer = old->layer;
-  } else {
-    nc.id = net.next_curve_id();
-  }
-  nc.keypoints = default_keypoints(nc.curve);
+  const NetworkCurve* old = item_a ? net.find_curve(item_a->id) : nullptr;
+  NetworkCurve nc = make_network_curve(old ? old->id : net.next_curve_id(),
+                                       polyline_curve(built.pts, built.closed),
+                                       old ? old->layer : curve_layer(stroke.layer), stroke.id);
   const Points3 final_pts = curve_points(nc.curve, 1.0);
   std::vector<Node> kept_nodes;
   if (item_a) {

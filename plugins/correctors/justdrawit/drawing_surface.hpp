@@ -5,7 +5,7 @@
 #include <array>
 #include <optional>
 
-#include "camera.hpp"
+#include "plane_depth.hpp"
 #include "point_list.hpp"
 
 namespace sketchlab::justdrawit {

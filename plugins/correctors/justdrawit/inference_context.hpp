@@ -4,7 +4,7 @@
 // plane, if any.
 #include <optional>
 
-#include "camera.hpp"
+#include "plane_depth.hpp"
 #include "jdi_params.hpp"
 
 namespace sketchlab::justdrawit {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "apply_decision.hpp"
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "candidates.hpp"
 #include "choice.hpp"
 #include "curve_edit.hpp"
@@ -19,6 +19,7 @@
 #include "new_curve_placement.hpp"
 #include "scratch.hpp"
 #include "sketchlab/draw_plane.hpp"
+#include "sketchlab/network_diff.hpp"
 #include "stroke_scene.hpp"
 
 namespace sketchlab::justdrawit {
@@ -194,8 +195,7 @@ Correction justdrawit_correct(const Stroke& stroke, const Sketch& sketch, const 
     net = &base;
   }
   if (stroke.draw_plane) {
-    const Vec4& pl = *stroke.draw_plane;
-    draw_plane = Plane{pl[3] * pl.head<3>(), pl.head<3>().normalized()};
+    draw_plane = plane_from_coefficients(*stroke.draw_plane);
   } else if (p.surface == SurfaceKind::draw_plane) {
     draw_plane = draw_plane_from(p, *net, last);
   }

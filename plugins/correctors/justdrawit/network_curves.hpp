@@ -3,7 +3,8 @@
 // helpers. JustDrawIt keeps curves as point lists (§4 "Representation");
 // the kernel stores them as poly-Béziers whose segments are straight (inner
 // control points at 1/3 and 2/3 of each chord), so point i is at t = i and
-// nothing is fitted away.
+// nothing is fitted away. (The edit between two networks is the kernel's
+// edit_between, sketchlab/network_diff.hpp.)
 #include "point_list.hpp"
 #include "sketchlab/edit.hpp"
 #include "sketchlab/network.hpp"
@@ -18,9 +19,5 @@ Points3 curve_points(const Curve& curve, double spacing);
 // closed: the last point is set equal to the first). Throws
 // std::invalid_argument on fewer than 2 distinct points.
 Curve polyline_curve(const Points3& pts, bool closed);
-
-// The edit turning `from` into `to` (curves, nodes and patches added,
-// replaced, removed; counters left to Network::apply).
-Edit edit_between(const Network& from, const Network& to);
 
 }  // namespace sketchlab::justdrawit

@@ -3,7 +3,7 @@
 // promoted stroke into a curve (§4.4.2).
 #include <optional>
 
-#include "camera.hpp"
+#include "plane_depth.hpp"
 #include "point_list.hpp"
 
 namespace sketchlab::justdrawit {

@@ -58,10 +58,11 @@ Scene build_scene(const Network& net, const Camera& cam, const Points2& stroke, 
       Vec2 bhi = -blo;
       bool all = true;
       for (int c = 0; c < 8 && all; ++c) {
-        Vec2 px;
-        all = cam.to_pixel(box.corner(static_cast<Box3::CornerType>(c)), px);
-        blo = blo.cwiseMin(px);
-        bhi = bhi.cwiseMax(px);
+        const auto px = cam.project(box.corner(static_cast<Box3::CornerType>(c)));
+        all = px.has_value();
+        if (!all) break;
+        blo = blo.cwiseMin(*px);
+        bhi = bhi.cwiseMax(*px);
       }
       const double m = 8 * d;
       if (all && (blo.x() > hi.x() + m || blo.y() > hi.y() + m || bhi.x() < lo.x() - m ||
@@ -75,12 +76,12 @@ Scene build_scene(const Network& net, const Camera& cam, const Points2& stroke, 
     p2.reserve(it.pts3.size());
     bool visible = it.pts3.size() >= 2;
     for (const Vec3& q : it.pts3) {
-      Vec2 px;
-      if (!cam.to_pixel(q, px)) {
+      const auto px = cam.project(q);
+      if (!px) {
         visible = false;
         break;
       }
-      p2.push_back(px);
+      p2.push_back(*px);
     }
     if (!visible) continue;
     it.proj = make_projected(std::move(p2), nc.curve.closed);

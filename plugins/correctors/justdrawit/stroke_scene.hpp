@@ -4,7 +4,7 @@
 // after bounding-box culling. Also the stroke's own pixels.
 #include <vector>
 
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "point_list.hpp"
 #include "sketchlab/network.hpp"
 #include "sketchlab/stroke.hpp"

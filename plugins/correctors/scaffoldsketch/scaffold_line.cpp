@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/network_nodes.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
@@ -114,12 +115,8 @@ Correction correct_scaffold_line(const Vec3& a, const Vec3& b, StrokeId stroke,
       params.direction_only_length == DirectionOnlyLength::drawn;
   const IrlsResult result = solve_irls(terms, a, b, options);
 
-  NetworkCurve curve;
-  curve.id = network.next_curve_id();
-  curve.curve = make_line(result.a, result.b);
-  curve.layer = Layer::scaffold;
-  curve.source_stroke = stroke;
-  curve.keypoints = default_keypoints(curve.curve);
+  const NetworkCurve curve =
+      make_network_curve(network.next_curve_id(), make_line(result.a, result.b), Layer::scaffold, stroke);
   out.edit.curves_added.push_back(curve);
   NodeId next_node = network.next_node_id();
   const double tolerance = scaled_threshold(params.node_tolerance, scale);

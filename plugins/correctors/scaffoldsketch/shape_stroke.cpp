@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "mvc_curve.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/network_nodes.hpp"
 #include "scaffold_line.hpp"
 #include "shape_keypoints.hpp"
@@ -80,10 +81,7 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
     return finish(mode_shape_fallback);
   }
 
-  NetworkCurve curve;
-  curve.id = network.next_curve_id();
-  curve.layer = Layer::shape;
-  curve.source_stroke = stroke.id;
+  Curve shape;
   const PcaLine pca =
       fit_pca_line(samples, params.straight_deviation, params.straight_length_tolerance);
   const bool straight = pca.is_line && (keys.points.back() - keys.points.front()).norm() > 1e-12;
@@ -95,8 +93,7 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
   };
   double mode = mode_shape_curve;
   if (straight) {
-    curve.curve = ends_only ? make_line(keys.points.front(), keys.points.back())
-                            : polyline_curve(keys.points);
+    shape = ends_only ? make_line(keys.points.front(), keys.points.back()) : polyline_curve(keys.points);
     mode = mode_shape_line;
     Constraint c;
     c.kind = ConstraintKind::straight;
@@ -107,13 +104,13 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
     out.constraints.push_back(c);
   } else {
     const MvcResult mvc = fit_mvc_curve(keys.points, keys.tangents, keys.closed, params);
-    curve.curve = mvc.curve;
+    shape = mvc.curve;
     out.stats.iterations = mvc.rounds;
     out.stats.extra["evaluations"] = mvc.evaluations;
     out.stats.extra["objective"] = mvc.objective;
     out.stats.extra["initial_objective"] = mvc.initial_objective;
   }
-  curve.keypoints = default_keypoints(curve.curve);
+  NetworkCurve curve = make_network_curve(network.next_curve_id(), std::move(shape), Layer::shape, stroke.id);
   const double n_samples = static_cast<double>(samples.size() - 1);
   for (std::size_t j = 0; j < m; ++j) {
     const double t = parameter(j);

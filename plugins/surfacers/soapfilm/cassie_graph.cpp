@@ -5,6 +5,7 @@
 
 #include "cassie_json.hpp"
 #include "patch_upkeep.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::soapfilm {
 namespace {
@@ -51,10 +52,7 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
         out.warnings.push_back(path.string() + ": " + where + " has no segments; skipped");
         continue;
       }
-      NetworkCurve nc;
-      nc.id = static_cast<CurveId>(sid + 1);
-      nc.source_stroke = static_cast<StrokeId>(sid + 1);
-      nc.layer = Layer::shape;
+      Curve curve;
       std::vector<std::pair<std::int64_t, double>> incidences;
       for (const auto& seg_id : seg_ids) {
         if (!seg_id.is_number_integer()) throw std::invalid_argument(where + ": a segment id is not an integer");
@@ -65,10 +63,10 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
         if (const auto [it, fresh] = owner.emplace(gid, sid); !fresh)
           throw std::invalid_argument(at + " already belongs to stroke " + std::to_string(it->second));
         const nlohmann::json& seg = *found->second;
-        std::vector<Vec3>& cp = nc.curve.control_points;
+        std::vector<Vec3>& cp = curve.control_points;
         const double t_start = cp.empty() ? 0.0 : static_cast<double>((cp.size() - 1) / 3);
         const nlohmann::json& pieces = cassie_field(seg, "ctrl_pts", at);
-        append_cassie_pieces(nc.curve, pieces, at);
+        append_cassie_pieces(curve, pieces, at);
         const Vec3 a = cassie_point(pieces.at(0).at(0), at + ": first point");
         // Consecutive segments of a stroke share their joint.
         if (t_start > 0.0 && (a - cp[static_cast<std::size_t>(3 * t_start)]).norm() > 1e-3)
@@ -90,8 +88,9 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
         incidences.emplace_back(swap ? n1 : n0, t_start);
         incidences.emplace_back(swap ? n0 : n1, t_end);
       }
-      finish_cassie_curve(nc.curve);
-      nc.keypoints = default_keypoints(nc.curve);
+      finish_cassie_curve(curve);
+      NetworkCurve nc = make_network_curve(static_cast<CurveId>(sid + 1), std::move(curve), Layer::shape,
+                                           static_cast<StrokeId>(sid + 1));
       for (const auto& [n, t] : incidences) {
         Node& node = nodes[n];
         node.id = static_cast<NodeId>(n + 1);

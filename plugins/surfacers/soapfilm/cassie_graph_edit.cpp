@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sketchlab/geometry/closest_point.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::soapfilm {
 namespace {
@@ -164,13 +165,7 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
     n.incidences = {{c, t_end}};
     on_new.emplace_back(n.id, p);
   }
-  NetworkCurve nc;
-  nc.id = c;
-  nc.curve = curve;
-  nc.layer = Layer::shape;
-  nc.source_stroke = in.stroke;
-  nc.keypoints = default_keypoints(curve);
-  overlay.add_curve(std::move(nc));
+  overlay.add_curve(make_network_curve(c, curve, Layer::shape, in.stroke));
 }
 
 }  // namespace

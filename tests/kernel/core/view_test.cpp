@@ -4,24 +4,13 @@
 #include <random>
 #include <stdexcept>
 
+#include "kernel/core/perspective_view.hpp"
 #include "sketchlab/view.hpp"
 
 using namespace sketchlab;
 
-namespace {
-View make_view(const Vec3& eye, const Vec3& target) {
-  View v;
-  v.view = look_at(eye, target, Vec3::UnitY());
-  v.projection = perspective(std::numbers::pi / 3.0, 1.5, 0.1, 100.0);
-  v.viewport = Vec4(10, 20, 1200, 800);
-  return v;
-}
-
-double distance_to_ray(const Ray& r, const Vec3& p) {
-  const Vec3 d = p - r.origin;
-  return (d - d.dot(r.direction) * r.direction).norm();
-}
-}  // namespace
+using test::distance_to_ray;
+using test::make_view;
 
 TEST_CASE("world_to_pixel then pixel_to_ray passes through the point", "[view]") {
   std::mt19937_64 rng(1234);

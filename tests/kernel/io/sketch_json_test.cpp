@@ -3,6 +3,7 @@
 #include <string>
 
 #include "sketchlab/io/sketch_json.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/session.hpp"
 #include "test_paths.hpp"
 
@@ -66,6 +67,41 @@ TEST_CASE("sketch JSON: patch faces must name vertices of their mesh", "[io][ske
   CHECK(error_parsing(patch("[[0,1,3]]")) == "s.json: patch 1.faces: vertex index 3 outside [0, 3)");
   CHECK(error_parsing(patch("[[0,1,-1]]")) == "s.json: patch 1.faces: vertex index -1 outside [0, 3)");
   CHECK_THAT(error_parsing(patch("[[0,1,1e10]]")), Catch::Contains("expected an integer in [-2147483648, 2147483647]"));
+}
+
+TEST_CASE("sketch JSON: patch meshes keep their vertex normals; files without them still read",
+          "[io][sketch_json]") {
+  Sketch sketch;
+  Edit edit;
+  edit.curves_added.push_back(make_network_curve(1, make_line(Vec3(0, 0, 0), Vec3(1, 0, 0)), Layer::shape));
+  Patch shaded;
+  shaded.id = 1;
+  shaded.boundary = {OrientedSegment{1, 0.0, 1.0, 1, 1}};
+  shaded.mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0.1)};
+  shaded.mesh.faces = {{0, 1, 2}};
+  shaded.mesh.normals = {Vec3(0, 0, 1), Vec3(0.1, 0, 1).normalized(), Vec3(0, -0.1, 1).normalized()};
+  Patch flat = shaded;
+  flat.id = 2;
+  flat.mesh.normals.clear();
+  edit.patches_added = {shaded, flat};
+  sketch.network.apply(edit);
+  const std::string text = sketch_to_json(sketch);
+  const Sketch back = parse_sketch_json(text, "s.json");
+  CHECK(back.network == sketch.network);  // normals included, to the last bit
+  CHECK(back.network.patches().at(1).mesh.normals == shaded.mesh.normals);
+  CHECK(back.network.patches().at(2).mesh.normals.empty());
+  const auto j = nlohmann::json::parse(text);
+  CHECK(j.at("patches")[0].at("mesh").at("normals").size() == 3);
+  CHECK_FALSE(j.at("patches")[1].at("mesh").contains("normals"));  // as files were before normals
+
+  // Not one normal per vertex, or not a vector: the patch and field named.
+  auto edited = j;
+  edited["patches"][0]["mesh"]["normals"].erase(2);
+  CHECK(error_parsing(edited.dump()) ==
+        "s.json: patch 1.normals: 2 normals for 3 vertices (one per vertex, or the key left out)");
+  edited = j;
+  edited["patches"][0]["mesh"]["normals"][1] = nlohmann::json::array({0, 1});
+  CHECK(error_parsing(edited.dump()) == "s.json: patch 1.normals: expected [x, y, z]");
 }
 
 TEST_CASE("sketch JSON: what sketch_to_json writes reads back", "[io][sketch_json]") {

@@ -1,8 +1,9 @@
-// default_keypoints, curves_of_stroke, live_strokes.
+// default_keypoints, make_network_curve, curves_of_stroke, live_strokes.
 #include <catch2/catch.hpp>
 
 #include "sketchlab/geometry/arclength.hpp"
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/sketch.hpp"
 
 using namespace sketchlab;
@@ -28,6 +29,24 @@ TEST_CASE("default keypoints are the ends and the arclength midpoint", "[network
   Curve bad;
   bad.control_points = {{0, 0, 0}};
   CHECK_THROWS_AS(default_keypoints(bad), std::invalid_argument);
+}
+
+TEST_CASE("make_network_curve and curve_layer", "[network][keypoints]") {
+  const Curve c = make_line(Vec3(0, 0, 0), Vec3(0, 2, 0));
+  const NetworkCurve nc = make_network_curve(5, c, Layer::scaffold, 12);
+  CHECK(nc.id == 5);
+  CHECK(nc.curve == c);
+  CHECK(nc.layer == Layer::scaffold);
+  CHECK(nc.source_stroke == 12);
+  CHECK(nc.keypoints == default_keypoints(c));
+  CHECK(nc.normals.empty());
+  CHECK(make_network_curve(1, c, Layer::free).source_stroke == 0);
+  Curve bad;
+  bad.control_points = {{0, 0, 0}};
+  CHECK_THROWS_AS(make_network_curve(1, bad, Layer::free), std::invalid_argument);
+
+  CHECK(curve_layer(Layer::automatic) == Layer::free);
+  for (Layer l : {Layer::scaffold, Layer::shape, Layer::free, Layer::guide}) CHECK(curve_layer(l) == l);
 }
 
 TEST_CASE("curves_of_stroke and live_strokes", "[network][sketch]") {

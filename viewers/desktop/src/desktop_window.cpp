@@ -87,8 +87,8 @@ DesktopWindow::DesktopWindow(ViewerModel& model, std::shared_ptr<PointerInput> i
   XSync(display, False);
   fit_camera_to_scene();
   // Default draw plane: through the scene centre, facing the camera.
-  plane_.origin = Vec3(camera_->GetFocalPoint());
-  plane_.normal = (Vec3(camera_->GetPosition()) - plane_.origin).normalized();
+  plane_.plane.point = Vec3(camera_->GetFocalPoint());
+  plane_.plane.normal = (Vec3(camera_->GetPosition()) - plane_.plane.point).normalized();
 }
 
 DesktopWindow::~DesktopWindow() = default;
@@ -153,7 +153,7 @@ void DesktopWindow::fit_camera_to_scene() {
   camera_->SetFocalPoint(c.focal_point.data());
   camera_->SetViewUp(c.view_up.data());
   camera_->SetViewAngle(c.view_angle_deg);
-  plane_.origin = c.focal_point;  // the draw plane follows the framed scene
+  plane_.plane.point = c.focal_point;  // the draw plane follows the framed scene
   dirty_ = true;
 }
 
@@ -193,7 +193,7 @@ void DesktopWindow::pump_input() {
 std::optional<Vec3> DesktopWindow::cursor_on_plane() const {
   const double gx = last_x_ + 0.5, gy = height_ - last_y_ - 0.5;
   Vec3 p;
-  const Vec4 plane = plane_through(plane_.origin, plane_.normal);
+  const Vec4 plane = plane_through(plane_.plane.point, plane_.plane.normal);
   if (pixel_on_plane(view_of(viewport_at(gx)), plane, {gx, gy}, p)) return p;
   return std::nullopt;
 }
@@ -256,7 +256,7 @@ void DesktopWindow::on_pointer(const XPointerEvent& e) {
       if (!model_.live()) input_->set_next_stroke_id(model_.next_stroke_id());
       PointerContext ctx;
       ctx.view = view_of(draw_stack_);
-      ctx.draw_plane = plane_through(plane_.origin, plane_.normal);
+      ctx.draw_plane = plane_through(plane_.plane.point, plane_.plane.normal);
       ctx.layer = Layer::automatic;  // the recorded mode event decides
       ctx.workspace_scale = model_.sketch(0).workspace.scale;
       input_->pen_down(sample, ctx);
@@ -323,11 +323,11 @@ void DesktopWindow::on_key(unsigned long key, unsigned modifiers) {
     overlay_dirty_ = true;
   };
   auto move_plane = [&](double sign) {
-    plane_.origin += sign * 0.05 * scene_size_ * plane_.normal;
+    plane_.plane.point += sign * 0.05 * scene_size_ * plane_.plane.normal;
     dirty_ = true;
   };
   auto axis_plane = [&](const Vec3& n) {
-    plane_.normal = n;
+    plane_.plane.normal = n;
     plane_.visible = true;
     dirty_ = true;
   };
@@ -344,7 +344,7 @@ void DesktopWindow::on_key(unsigned long key, unsigned modifiers) {
     case XK_y: if (ctrl) command(RedoEvent{}); else axis_plane(Vec3::UnitY()); break;
     case XK_x: axis_plane(Vec3::UnitX()); break;
     case XK_v:
-      plane_.normal = (Vec3(camera_->GetPosition()) - Vec3(camera_->GetFocalPoint())).normalized();
+      plane_.plane.normal = (Vec3(camera_->GetPosition()) - Vec3(camera_->GetFocalPoint())).normalized();
       plane_.visible = true;
       dirty_ = true;
       break;

@@ -18,6 +18,7 @@
 #include "scene_actors.hpp"
 #include "sketchlab/desktop/view_app.hpp"
 #include "sketchlab/desktop/viewer_model.hpp"
+#include "sketchlab/geometry/plane.hpp"
 #include "sketchlab/plugin/pointer_input.hpp"
 #include "x_pointer.hpp"
 
@@ -30,10 +31,10 @@ struct WindowOptions {
   ViewOptions options;
 };
 
-// The plane strokes are drawn on: through `origin` with unit `normal`.
+// The plane strokes are drawn on (the kernel's Plane: a point on it and the
+// unit normal), and whether it is shown.
 struct DrawPlane {
-  Vec3 origin = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ();
+  Plane plane;
   bool visible = true;
 };
 

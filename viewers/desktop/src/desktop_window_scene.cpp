@@ -47,11 +47,11 @@ vtkSmartPointer<vtkActor2D> polyline_2d(const std::vector<Vec2>& points, const v
 
 // The draw plane as a light square outline with a faint fill, `size` wide.
 std::vector<vtkSmartPointer<vtkProp>> plane_props(const DrawPlane& plane, double size) {
-  const Vec3 n = plane.normal.normalized();
+  const Vec3 n = plane.plane.normal.normalized();
   const Vec3 u = n.unitOrthogonal(), v = n.cross(u).normalized();
   const double h = 0.5 * size;
-  const Vec3 c[4] = {plane.origin - h * u - h * v, plane.origin + h * u - h * v,
-                     plane.origin + h * u + h * v, plane.origin - h * u + h * v};
+  const Vec3& o = plane.plane.point;
+  const Vec3 c[4] = {o - h * u - h * v, o + h * u - h * v, o + h * u + h * v, o - h * u + h * v};
   std::vector<vtkSmartPointer<vtkProp>> out;
   for (int fill = 0; fill < 2; ++fill) {
     vtkNew<vtkPoints> pts;

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "analytic_params.hpp"
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "drawing.hpp"
 #include "stroke_2d.hpp"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "analytic_corrector.hpp"
-#include "camera.hpp"
+#include "sketchlab/camera.hpp"
 #include "curve_crossing.hpp"
 #include "demo_scenes.hpp"
 #include "line_inference.hpp"

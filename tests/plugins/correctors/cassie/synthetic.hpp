@@ -4,6 +4,7 @@
 #include <functional>
 #include <vector>
 
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/sketch.hpp"
 
 namespace sketchlab::test {
@@ -25,11 +26,7 @@ inline Stroke make_stroke(StrokeId id, int n, const std::function<Vec3(double)>&
 
 inline void add_curve(Sketch& sketch, const Curve& c) {
   Edit e;
-  NetworkCurve nc;
-  nc.id = sketch.network.next_curve_id();
-  nc.curve = c;
-  nc.keypoints = default_keypoints(c);
-  e.curves_added.push_back(nc);
+  e.curves_added.push_back(make_network_curve(sketch.network.next_curve_id(), c, Layer::free));
   sketch.network.apply(e);
 }
 

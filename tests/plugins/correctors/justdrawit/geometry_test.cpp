@@ -2,7 +2,7 @@
 // default normals, on plain data.
 #include <catch2/catch.hpp>
 
-#include "camera.hpp"
+#include "plane_depth.hpp"
 #include "default_normals.hpp"
 #include "drawing_surface.hpp"
 #include "jdi_fixture.hpp"
@@ -17,10 +17,10 @@ TEST_CASE("Depth relative to a plane round-trips and lifted strokes project back
   const Vec3 p(0.2, -0.1, 0.3);
   const auto z = plane_depth(cam, film, p);
   REQUIRE(z);
-  Vec2 px;
-  REQUIRE(cam.to_pixel(p, px));
-  CHECK((world_to_pixel(v, p).head<2>() - px).norm() < 1e-9);
-  const auto back = at_depth(cam, film, px, *z);
+  const auto px = cam.project(p);
+  REQUIRE(px);
+  CHECK((world_to_pixel(v, p).head<2>() - *px).norm() < 1e-9);
+  const auto back = at_depth(cam, film, *px, *z);
   REQUIRE(back);
   CHECK((*back - p).norm() < 1e-9);
 
@@ -31,9 +31,9 @@ TEST_CASE("Depth relative to a plane round-trips and lifted strokes project back
   const auto lifted = lift(cam, film, stroke, depth, 4);
   REQUIRE(lifted);
   for (std::size_t i = 0; i < stroke.size(); ++i) {
-    Vec2 q;
-    REQUIRE(cam.to_pixel((*lifted)[i], q));
-    CHECK((q - stroke[i]).norm() < 1e-6);  // smoothing stays on the rays (§4.5)
+    const auto q = cam.project((*lifted)[i]);
+    REQUIRE(q);
+    CHECK((*q - stroke[i]).norm() < 1e-6);  // smoothing stays on the rays (§4.5)
   }
 }
 

@@ -2,6 +2,7 @@
 // Small builders shared by the ScaffoldSketch tests.
 #include <vector>
 
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/sketch.hpp"
 
 namespace sketchlab::scaffoldsketch::test {
@@ -35,11 +36,7 @@ inline Stroke polyline_stroke(StrokeId id, const std::vector<Vec3>& points, Laye
 
 // Adds a scaffold line a-b (with default keypoints) to the sketch; returns its id.
 inline CurveId add_scaffold_line(Sketch& sketch, const Vec3& a, const Vec3& b) {
-  NetworkCurve c;
-  c.id = sketch.network.next_curve_id();
-  c.curve = make_line(a, b);
-  c.layer = Layer::scaffold;
-  c.keypoints = default_keypoints(c.curve);
+  const NetworkCurve c = make_network_curve(sketch.network.next_curve_id(), make_line(a, b), Layer::scaffold);
   Edit e;
   e.curves_added.push_back(c);
   sketch.network.apply(e);

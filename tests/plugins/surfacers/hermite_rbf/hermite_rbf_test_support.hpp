@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sketchlab/network.hpp"
+#include "sketchlab/network_curve.hpp"
 
 namespace sketchlab::hermite_rbf_test {
 
@@ -39,10 +40,7 @@ inline Curve arc(const Vec3& c, double r, const Vec3& u, const Vec3& v, int arcs
 }
 
 inline NetworkCurve network_curve(CurveId id, Curve c, std::vector<CurveNormal> normals = {}) {
-  NetworkCurve nc;
-  nc.id = id;
-  nc.curve = std::move(c);
-  nc.keypoints = default_keypoints(nc.curve);
+  NetworkCurve nc = make_network_curve(id, std::move(c), Layer::free);
   nc.normals = std::move(normals);
   return nc;
 }

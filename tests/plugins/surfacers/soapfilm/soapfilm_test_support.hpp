@@ -9,6 +9,7 @@
 
 #include "cassie_replay.hpp"
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/network_curve.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 #include "sketchlab/session.hpp"
 
@@ -31,11 +32,7 @@ class PreparedCorrector : public Corrector {
     const PreparedCurve& pc = curves_.at(stroke.id);
     const Network& net = sketch.network;
     Correction c;
-    NetworkCurve nc;
-    nc.id = net.next_curve_id();
-    nc.curve = pc.curve;
-    nc.source_stroke = stroke.id;
-    nc.keypoints = default_keypoints(pc.curve);
+    const NetworkCurve nc = make_network_curve(net.next_curve_id(), pc.curve, Layer::free, stroke.id);
     c.edit.curves_added.push_back(nc);
     NodeId next = net.next_node_id();
     for (double t : pc.junctions) {
