@@ -125,8 +125,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--snap-tolerance", o->snap_tolerance,
                   "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
   cmd->add_flag("--causes", o->causes,
-                "Also break the ends whose snap kind differs down by cause, per group (see "
-                "app/fidelity_causes.hpp)");
+                "Also break the ends whose snap kind differs down by cause, and every end's distance to "
+                "the reference's down by the pair of snap kinds, per group (see app/fidelity_causes.hpp)");
   cmd->add_option("--cassie-logs", o->cassie_logs,
                   "CASSIE's raw_data directory: <session>.json gives the constraints CASSIE applied and "
                   "rejected, for --causes");
@@ -151,6 +151,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::vector<std::string> session_rows{std::string(header_row)};
     std::map<std::string, std::map<std::string, CauseCount>> causes;
     std::map<std::string, std::size_t> cause_ends;
+    std::map<std::string, std::map<std::string, EndDistances>> end_distances;
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
       const auto strokes = teacher_forced(rec, *corrector, opt);
@@ -175,6 +176,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
         const std::string cg = group == "Armature" || group == "Patch" ? "Armature+Patch" : group;
         count_causes(strokes, o->cassie_logs.empty() ? nullptr : &logs, o->near, causes[cg]);
         cause_ends[cg] += summarize(strokes).endpoints;
+        add_end_distances(strokes, raw_stroke_ends(rec), end_distances[cg]);
       }
     }
     std::vector<std::string> rows{std::string(header_row)};
@@ -192,6 +194,9 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     for (const auto& [name, counts] : causes)
       std::cout << "\n" << name << ": " << cause_ends[name] << " ends, snap kind differs at:\n"
                 << cause_table(counts, cause_ends[name]);
+    for (const auto& [name, d] : end_distances)
+      std::cout << "\n" << name << ": distance from each of CASSIE's ends to ours, by snap kinds:\n"
+                << end_distance_table(d);
     if (!o->csv_dir.empty()) {
       std::string csv;
       for (const auto* list : {&session_rows, &rows})

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sketchlab/lab/distribution.hpp"
+
 namespace sketchlab::cli {
 namespace {
 
@@ -91,6 +93,65 @@ std::string cause_table(const std::map<std::string, CauseCount>& counts, std::si
   o << "cause" << std::string(width - 5, ' ') << "    ends    snap  of ends\n";
   for (const auto& [name, c] : rows) line(name, c.ends, c.snap_disagreements);
   line("total", total, total_snap);
+  return o.str();
+}
+
+void add_end_distances(const std::vector<TeacherForcedStroke>& strokes,
+                       const std::map<StrokeId, std::array<Vec3, 2>>& raw_ends,
+                       std::map<std::string, EndDistances>& distances) {
+  const auto kind = [](const std::string& k) { return k.empty() ? std::string("free") : k; };
+  for (const TeacherForcedStroke& r : strokes) {
+    if (!r.compared) continue;
+    const auto raw = raw_ends.find(r.stroke);
+    for (int k = 0; k < 2; ++k) {
+      const int out_end = r.reversed ? 1 - k : k;  // the output curve starts where the stroke does
+      std::string group = r.reference_line != r.output_line ? "line vs Bezier"
+                          : std::string(r.reference_line ? "line: " : "") + "CASSIE " +
+                                kind(r.reference_snap[k]) + ", we " + kind(r.output_snap[k]);
+      if (r.reference_line == r.output_line && r.reference_snap[k].empty() && r.output_snap[k].empty()) {
+        const auto hook = r.stats.extra.find(out_end == 0 ? "hook_cut_start" : "hook_cut_end");
+        if (hook != r.stats.extra.end()) group += hook->second != 0.0 ? " (hook cut)" : " (no hook cut)";
+      }
+      EndDistances& d = distances[group];
+      d.to_reference.push_back((r.reference_end[k] - r.output_end[k]).norm());
+      if (raw == raw_ends.end()) continue;
+      const Vec3& end = raw->second[static_cast<std::size_t>(out_end)];
+      d.reference_to_raw.push_back((r.reference_end[k] - end).norm());
+      d.output_to_raw.push_back((r.output_end[k] - end).norm());
+    }
+  }
+}
+
+std::map<StrokeId, std::array<Vec3, 2>> raw_stroke_ends(const Recording& recording) {
+  std::map<StrokeId, std::array<Vec3, 2>> out;
+  for (const Event& e : recording.events)
+    if (const auto* s = std::get_if<StrokeEvent>(&e.payload); s && !s->stroke.samples.empty())
+      out[s->stroke.id] = {s->stroke.samples.front().position, s->stroke.samples.back().position};
+  return out;
+}
+
+std::string end_distance_table(const std::map<std::string, EndDistances>& distances) {
+  struct Row {
+    std::string name;
+    Distribution ours, reference_raw, output_raw;
+  };
+  std::vector<Row> rows;
+  std::size_t width = 4;
+  for (const auto& [name, d] : distances) {
+    rows.push_back({name, distribution(d.to_reference), distribution(d.reference_to_raw), distribution(d.output_to_raw)});
+    width = std::max(width, name.size());
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.ours.count > b.ours.count; });
+  std::ostringstream o;
+  o << "ends" << std::string(width - 4, ' ')
+    << "   count  ours-CASSIE median/p90 mm  CASSIE-raw end  ours-raw end\n";
+  for (const Row& r : rows) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "  %6zu  %13.2f / %6.2f  %6.2f / %5.2f  %5.2f / %5.2f\n", r.ours.count,
+                  1000 * r.ours.median, 1000 * r.ours.p90, 1000 * r.reference_raw.median, 1000 * r.reference_raw.p90,
+                  1000 * r.output_raw.median, 1000 * r.output_raw.p90);
+    o << r.name << std::string(width - r.name.size(), ' ') << buf;
+  }
   return o.str();
 }
 

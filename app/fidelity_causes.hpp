@@ -2,6 +2,7 @@
 // Breakdown of the ends where a corrector's snap kind differs from the
 // reference's (`sketchlab fidelity --causes`), by the first cause that
 // applies, so the largest differences can be traced to a rule.
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -44,5 +45,29 @@ void count_causes(const std::vector<TeacherForcedStroke>& strokes,
 // An aligned table: cause, ends, snap disagreements, % of `endpoints`,
 // largest first.
 std::string cause_table(const std::map<std::string, CauseCount>& counts, std::size_t endpoints);
+
+// Where the endpoint distance comes from (issue #15: the ends land mm away
+// from CASSIE's even when both snap the same way): per end, the distance (m)
+// from the reference end to the output end matched to it, and from each of
+// them to the raw stroke's end there (first or last sample: who moved the
+// end), grouped by the pair of snap kinds ("CASSIE curve, we curve", "free"
+// for none), lines apart, and for ends free in both by whether a hook was cut
+// at our end (the cassie corrector's hook_cut_start / hook_cut_end).
+struct EndDistances {
+  std::vector<double> to_reference, reference_to_raw, output_to_raw;
+};
+
+// `raw_ends`: each stroke's first and last sample; strokes missing from it
+// add no raw distances.
+void add_end_distances(const std::vector<TeacherForcedStroke>& strokes,
+                       const std::map<StrokeId, std::array<Vec3, 2>>& raw_ends,
+                       std::map<std::string, EndDistances>& distances);
+
+// The first and last sample of every stroke of the recording.
+std::map<StrokeId, std::array<Vec3, 2>> raw_stroke_ends(const Recording& recording);
+
+// An aligned table: group, ends, then median and p90 (mm) of the three
+// distances, largest group first.
+std::string end_distance_table(const std::map<std::string, EndDistances>& distances);
 
 }  // namespace sketchlab::cli

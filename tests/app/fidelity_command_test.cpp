@@ -103,6 +103,43 @@ std::size_t cause_total(const std::string& output, const std::string& title) {
   return n;
 }
 
+// Compared strokes of the session CSV.
+std::size_t compared_strokes(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string cell;
+    for (int i = 0; i < 3; ++i) std::getline(ss, cell, ',');
+    n += cell == "1";
+  }
+  return n;
+}
+
+// Sum of the "count" column of the end-distance table following `title`, and
+// the row whose group is `group` (empty if none).
+std::size_t end_table_count(const std::string& output, const std::string& title, const std::string& group,
+                            std::string& row) {
+  std::size_t at = output.find(title);
+  if (at == std::string::npos) return 0;
+  std::istringstream in(output.substr(at));
+  std::string line;
+  std::getline(in, line);  // title
+  std::getline(in, line);  // column names
+  std::size_t n = 0;
+  while (std::getline(in, line) && !line.empty()) {
+    const std::size_t digits = line.find_first_of("0123456789", line.find("  "));
+    std::istringstream cells(line.substr(digits));
+    std::size_t count = 0;
+    cells >> count;
+    n += count;
+    if (line.rfind(group + "  ", 0) == 0) row = line;
+  }
+  return n;
+}
+
 }  // namespace
 
 TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind differs", "[app]") {
@@ -123,6 +160,13 @@ TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind di
   REQUIRE(without.status == 0);
   CHECK(cause_total(without.output, "Armature+Patch: ") == expected);
   CHECK(without.output.find("we snapped, CASSIE free: (no log of the stroke)") != std::string::npos);
+  // Every end of every compared stroke is in the end-distance table once; an
+  // end at the same node in both curves is at distance 0.
+  std::string node_row;
+  const std::string title = "Armature+Patch: distance from each of CASSIE's ends to ours";
+  CHECK(end_table_count(with_logs.output, title, "CASSIE node, we node", node_row) ==
+        2 * compared_strokes(dir / "csv" / "02-2-2.csv"));
+  CHECK(node_row.find(" 0.00 /   0.00 ") != std::string::npos);
   const auto missing = test::run_captured(base + " --cassie-logs " + (dir / "nowhere").string());
   CHECK(missing.status != 0);
   CHECK(missing.output.find((dir / "nowhere" / "02-2-2.json").string()) != std::string::npos);
