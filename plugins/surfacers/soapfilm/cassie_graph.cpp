@@ -122,6 +122,8 @@ FidelityReport& FidelityReport::operator+=(const FidelityReport& o) {
   ours += o.ours;
   found += o.found;
   missed += o.missed;
+  missed_not_closed += o.missed_not_closed;
+  missed_not_found += o.missed_not_found;
   extra += o.extra;
   extra_matching_manual += o.extra_matching_manual;
   warnings.insert(warnings.end(), o.warnings.begin(), o.warnings.end());
@@ -150,7 +152,18 @@ FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_jso
   r.cassie_automatic = static_cast<int>(automatic.size());
   r.cassie_manual = static_cast<int>(manual.size());
   r.ours = static_cast<int>(ours.size());
-  for (const StrokeSet& s : automatic) (ours.count(s) ? r.found : r.missed)++;
+  std::map<std::int64_t, CurveId> curve_of;
+  for (const auto& [c, s] : net.stroke_of) curve_of[s] = c;
+  for (const StrokeSet& s : automatic) {
+    if (ours.count(s)) {
+      ++r.found;
+      continue;
+    }
+    ++r.missed;
+    const MissingCycle why = classify_missing(net.network, curve_of, s, params);
+    if (why == MissingCycle::not_closed) ++r.missed_not_closed;
+    if (why == MissingCycle::not_found) ++r.missed_not_found;
+  }
   for (const StrokeSet& s : ours)
     if (!automatic.count(s)) {
       ++r.extra;

@@ -11,6 +11,7 @@
 
 #include "cassie_json.hpp"
 #include "cassie_session.hpp"
+#include "replay_causes.hpp"
 #include "cycle_search.hpp"
 #include "sketchlab/network.hpp"
 
@@ -37,6 +38,9 @@ struct FidelityReport {
   int ours = 0;              // cycles found by this plugin (unique stroke sets)
   int found = 0;             // ours ∩ CASSIE automatic
   int missed = 0;            // CASSIE automatic not found
+  // Of the missed, on this (CASSIE's exact) graph: no closed path through
+  // their strokes at all, or one no walk follows (replay_causes.hpp).
+  int missed_not_closed = 0, missed_not_found = 0;
   int extra = 0;             // ours not among CASSIE automatic
   int extra_matching_manual = 0;  // of the extras, patches the CASSIE user added by hand
   std::vector<std::string> warnings;

@@ -130,8 +130,22 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
 
   std::vector<std::pair<NodeId, Vec3>> on_new;  // nodes on the new curve, with positions
   const double meet = curve.kind == CurveKind::line ? params.line_meets * delta : params.on_curve;
+  // A node the new curve already has at parameter t: it is the new curve's
+  // only node there, whatever the distances (two nodes at one t of a curve
+  // would leave no segment between them, cutting the network there).
+  auto node_at = [&](double t) -> NodeId {
+    for (const auto& [id, p] : on_new)
+      if (has_incidence(overlay.node(id), c, t)) return id;
+    return 0;
+  };
   for (const Meeting& m : meetings(overlay, curve, meet)) {
     const double t = own_t(m.t_new);
+    // 0. The new curve's node at this parameter (a joint meeting two curves).
+    if (const NodeId here = node_at(t)) {
+      Node& n = overlay.node(here);
+      if (!Overlay::on_curve(n, m.old)) n.incidences.push_back({m.old, m.t_old});
+      continue;
+    }
     // 1. A node of the old curve within δ of the meeting point.
     if (const NodeId old_node = overlay.node_on(m.old, m.point, params.reuse_old * delta)) {
       Node& n = overlay.node(old_node);
@@ -158,6 +172,9 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
   // Every stroke end is a node (a closed stroke has one).
   for (double t_end : curve.closed ? std::vector<double>{0.0} : std::vector<double>{0.0, T}) {
     const Vec3 p = curve.control_points[t_end == 0.0 ? 0 : curve.control_points.size() - 1];
+    // An intersection at the end made its node already (an old curve's node
+    // within δ may lie farther than 0.5δ from the end point).
+    if (node_at(t_end)) continue;
     if (std::any_of(on_new.begin(), on_new.end(),
                     [&](const auto& q) { return (q.second - p).norm() <= params.reuse_new * delta; }))
       continue;

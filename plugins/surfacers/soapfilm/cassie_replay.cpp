@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "patch_upkeep.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/session.hpp"
 #include "timed_soapfilm.hpp"
@@ -92,6 +93,8 @@ ReplayFigures& ReplayFigures::operator+=(const ReplayFigures& o) {
   matched_elsewhere += o.matched_elsewhere;
   ours_removed += o.ours_removed;
   cassie_final += o.cassie_final;
+  rebuilt_ours += o.rebuilt_ours;
+  rebuilt_found += o.rebuilt_found;
   ours_final += o.ours_final;
   matched_final += o.matched_final;
   causes += o.causes;
@@ -140,7 +143,12 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       if (const auto g = group_of(*p.created)) ++cassie_at[{*g, p.strokes}];
   // CASSIE's patches missed at their group, classified on our network as it
   // is when the group ends; and how each of ours was last removed.
-  std::vector<std::pair<StrokeSet, MissingCycle>> missing;
+  struct Missing {
+    StrokeSet strokes;
+    MissingCycle why;
+    Departure astray;
+  };
+  std::vector<Missing> missing;
   std::map<StrokeSet, std::string> removed_by;
 
   auto surfacer = std::make_shared<TimedSoapfilm>(params);
@@ -260,8 +268,9 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
         const auto o = ours_at.find(it->first);
         const int unmatched = it->second - std::min(it->second, o == ours_at.end() ? 0 : o->second);
         if (unmatched == 0) continue;
-        const MissingCycle why = classify_missing(net, curves.curve_of, it->first.second, params.search);
-        for (int k = 0; k < unmatched; ++k) missing.emplace_back(it->first.second, why);
+        Departure astray = Departure::none;
+        const MissingCycle why = classify_missing(net, curves.curve_of, it->first.second, params.search, &astray);
+        for (int k = 0; k < unmatched; ++k) missing.push_back({it->first.second, why, astray});
       }
     result.events.push_back(std::move(ev));
   }
@@ -294,14 +303,25 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     result.figures.matched_created += m;
     if (n > m && ours_ever.count(key.second)) result.figures.matched_elsewhere += n - m;
   }
-  for (const auto& [strokes, cause] : missing) {
+  for (const auto& [strokes, cause, astray] : missing) {
     if (ours_ever.count(strokes)) {
       ++why.miss_elsewhere;
       continue;
     }
     switch (cause) {
       case MissingCycle::curve_absent: ++why.miss_curve_absent; break;
-      case MissingCycle::not_found: ++why.miss_not_found; break;
+      case MissingCycle::not_closed: ++why.miss_not_closed; break;
+      case MissingCycle::not_found:
+        ++why.miss_not_found;
+        switch (astray) {
+          case Departure::at_two: ++why.astray_at_two; break;
+          case Departure::at_sharp: ++why.astray_at_sharp; break;
+          case Departure::at_smooth: ++why.astray_at_smooth; break;
+          case Departure::at_undefined: ++why.astray_at_undefined; break;
+          case Departure::inside:
+          case Departure::none: ++why.astray_inside; break;
+        }
+        break;
       case MissingCycle::refused_two: ++why.miss_refused_two; break;
       case MissingCycle::not_searched: ++why.miss_not_searched; break;
     }
@@ -331,6 +351,14 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     else
       ++why.end_removed_other;
   }
+  std::set<StrokeSet> rebuilt;
+  for (const auto& cycle : detect_all_cycles(live.sketch().network, params.search)) {
+    StrokeSet s;
+    for (const OrientedSegment& piece : cycle) s.insert(curves.cassie_of.at(piece.curve));
+    rebuilt.insert(s);
+  }
+  result.figures.rebuilt_ours = static_cast<int>(rebuilt.size());
+  for (const StrokeSet& s : cassie_final) result.figures.rebuilt_found += rebuilt.count(s) ? 1 : 0;
   for (const StrokeSet& s : ours_final) {
     if (cassie_final.count(s)) continue;
     if (by_hand.count(s))

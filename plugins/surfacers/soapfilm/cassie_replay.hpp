@@ -43,6 +43,11 @@ struct ReplayFigures {
   // At the end: CASSIE's automatic patches not deleted by hand whose strokes
   // are all alive, vs our automatic patches alive (unique stroke sets).
   int cassie_final = 0, ours_final = 0, matched_final = 0;
+  // The final-network comparison (cassie_graph.hpp) on the network this
+  // replay built: every segment of it searched, the cycles' stroke sets vs
+  // cassie_final. Against the same figure on CASSIE's exact graph it
+  // separates what the rebuilt graph costs from what the walk costs.
+  int rebuilt_ours = 0, rebuilt_found = 0;
   ReplayCauses causes;  // one cause per disagreement above (replay_causes.hpp)
   double recall_created() const { return cassie_created ? double(matched_created) / cassie_created : 0.0; }
   double precision_created() const { return ours_created ? double(matched_created) / ours_created : 0.0; }

@@ -169,8 +169,9 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal) {
   return cands[static_cast<std::size_t>(pick)];
 }
 
-std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal) {
+std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, Cycle* trace) {
   ++walks_;
+  if (trace) *trace = {start};
   if (is_loop(graph_->segment(start.segment))) return Cycle{start};
   Cycle cycle{start};
   std::set<int> used{start.segment};
@@ -181,6 +182,7 @@ std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_norma
     check_budget();  // issue 17: the per-event time budget
     const auto next = turn(cur, normal);
     if (!next) return std::nullopt;
+    if (trace && !(*next == start)) trace->push_back(*next);
     if (*next == start) {
       if (cycle.size() < 2) return std::nullopt;
       if (params_.reject_outer && winds_clockwise(cycle, normal_sum)) return std::nullopt;
@@ -209,13 +211,16 @@ bool CycleSearcher::winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) 
   return area.dot(normal_sum) < 0.0;
 }
 
-std::vector<Cycle> CycleSearcher::search_segment(int segment) {
+std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<Cycle>* traces) {
   std::vector<Cycle> out;
+  Cycle trace;
+  Cycle* t = traces ? &trace : nullptr;
   // A copy: frame() below may split more curves into graph segments, which
   // reallocates the graph's segment storage (ASan: heap-use-after-free).
   const GraphSegment g = graph_->segment(segment);
   if (is_loop(g)) {
-    if (auto c = walk({segment, true}, Vec3::UnitZ())) out.push_back(std::move(*c));
+    if (auto c = walk({segment, true}, Vec3::UnitZ(), t)) out.push_back(std::move(*c));
+    if (traces) traces->push_back(trace);
     return out;
   }
   // From node0 unless it is sharp (or has no normal) and node1 is not.
@@ -226,8 +231,10 @@ std::vector<Cycle> CycleSearcher::search_segment(int segment) {
   const HalfEdge start{segment, !from1};
   const NodeFrame& f = from1 ? f1 : f0;
   if (!f.defined) return out;
-  for (const Vec3& n : {Vec3(f.normal), Vec3(-f.normal)})
-    if (auto c = walk(start, n)) out.push_back(std::move(*c));
+  for (const Vec3& n : {Vec3(f.normal), Vec3(-f.normal)}) {
+    if (auto c = walk(start, n, t)) out.push_back(std::move(*c));
+    if (traces) traces->push_back(trace);
+  }
   return out;
 }
 

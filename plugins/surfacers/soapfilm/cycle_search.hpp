@@ -75,12 +75,15 @@ class CycleSearcher {
   // with fewer than 2 segments or on a segment already in the cycle, and
   // closes when it turns back into `start` with at least 2 segments. A loop
   // segment is a cycle by itself. Nodes may be revisited.
-  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal);
+  // `trace`, when given, receives the half-edges walked, closed or not (for
+  // diagnostics: where a walk leaves the cycle it was expected to follow).
+  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, Cycle* trace = nullptr);
 
   // The two walks of a segment (item 25), one with each orientation of the
   // normal at its start node: node0, unless node0 is sharp (or has no
   // normal) and node1 is not. May return the same cycle twice.
-  std::vector<Cycle> search_segment(int segment);
+  // `traces`, when given, receives the trace of each walk (see walk()).
+  std::vector<Cycle> search_segment(int segment, std::vector<Cycle>* traces = nullptr);
 
   int walks() const { return walks_; }
 

@@ -15,22 +15,29 @@ namespace sketchlab::soapfilm {
 // CASSIE made it, seen on our network at that moment (checked in this order).
 enum class MissingCycle {
   curve_absent,  // one of its strokes has no curve in our network
-  not_found,     // no walk from any graph segment of its curves closes over exactly its strokes (item 24's walk)
+  not_closed,    // its curves' graph segments hold no closed path through every one of its strokes (a node is missing)
+  not_found,     // they do, but no walk from any graph segment of its curves closes over exactly its strokes (item 24's walk)
   refused_two,   // a walk closes over it, but one of its segments already bounds two patches (item 24)
   not_searched,  // a walk closes over it and nothing refuses it: the upkeep never walked from there, or its mesh failed
 };
+
+// Where the walks over a cycle they do not close (not_found) go astray: the
+// walk staying longest on the patch's curves leaves them at a node of this
+// kind, or stops without leaving them (a dangling end, a segment walked twice).
+enum class Departure { none, at_two, at_sharp, at_smooth, at_undefined, inside };
 
 // Classifies a missing CASSIE patch over `strokes` on `network`, whose curve
 // of each CASSIE stroke id is `curve_of` (stroke ids absent there, or curves
 // no longer in the network, are absent). Walks two ways from every graph
 // segment of the patch's curves with `params` (CycleSearcher::search_segment).
 MissingCycle classify_missing(const Network& network, const std::map<std::int64_t, CurveId>& curve_of,
-                              const StrokeSet& strokes, const CycleSearchParams& params);
+                              const StrokeSet& strokes, const CycleSearchParams& params,
+                              Departure* departure = nullptr);
 
 struct ReplayCauses {
   // CASSIE patches not created at their event (sum = cassie_created - matched_created).
   int miss_elsewhere = 0;  // we created the same strokes at another event
-  int miss_curve_absent = 0, miss_not_found = 0, miss_refused_two = 0, miss_not_searched = 0;
+  int miss_curve_absent = 0, miss_not_closed = 0, miss_not_found = 0, miss_refused_two = 0, miss_not_searched = 0;
   // Our patches CASSIE did not create at that event (sum = ours_created - matched_created).
   int extra_elsewhere = 0;  // CASSIE made the same strokes automatically at another event
   int extra_by_hand = 0;    // CASSIE's user added a patch over the same strokes by hand (foundByAlgo false)
@@ -43,8 +50,10 @@ struct ReplayCauses {
   int end_extra_by_hand = 0;  // CASSIE's user added it by hand
   int end_extra_cassie_gone = 0;  // CASSIE made it automatically, but the user deleted it or a stroke of it is gone
   int end_extra_other = 0;
+  // miss_not_found by where the walks go astray (Departure).
+  int astray_at_two = 0, astray_at_sharp = 0, astray_at_smooth = 0, astray_at_undefined = 0, astray_inside = 0;
   int missed_created() const {
-    return miss_elsewhere + miss_curve_absent + miss_not_found + miss_refused_two + miss_not_searched;
+    return miss_elsewhere + miss_curve_absent + miss_not_closed + miss_not_found + miss_refused_two + miss_not_searched;
   }
   int extra_created() const { return extra_elsewhere + extra_by_hand + extra_other; }
   int missed_end() const { return end_removed_by_crossing + end_removed_other + end_never_created; }

@@ -39,10 +39,31 @@ TEST_CASE("a missing CASSIE patch is classified by what stops it on our network"
   with_unknown.insert(99);
   CHECK(soapfilm::classify_missing(s.network(), curve_of, with_unknown, params) == MissingCycle::curve_absent);
 
-  // Two bottom and two top edges bound no face: the walks never close over them.
+  // Two bottom and two top edges hold no closed path at all.
   const soapfilm::StrokeSet not_a_face = {*bottom.begin(), *std::next(bottom.begin()), *top.begin(),
                                           *std::next(top.begin())};
-  CHECK(soapfilm::classify_missing(s.network(), curve_of, not_a_face, params) == MissingCycle::not_found);
+  CHECK(soapfilm::classify_missing(s.network(), curve_of, not_a_face, params) == MissingCycle::not_closed);
+
+  // The belt of six edges round the cube (corners 0-1-3-7-6-4, bits x, y, z)
+  // is a closed path but no face: the walks never close over it.
+  const auto corners = cube_corners(0.2);
+  auto edge = [&](int i, int j) {
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const Curve& c = edges[k].curve;
+      const Vec3 a = c.control_points.front(), b = c.control_points.back();
+      const Vec3 p = corners[static_cast<std::size_t>(i)], q = corners[static_cast<std::size_t>(j)];
+      if (((a - p).norm() < 1e-12 && (b - q).norm() < 1e-12) || ((a - q).norm() < 1e-12 && (b - p).norm() < 1e-12))
+        return static_cast<std::int64_t>(k + 1);
+    }
+    return std::int64_t{-1};
+  };
+  const soapfilm::StrokeSet belt = {edge(0, 1), edge(1, 3), edge(3, 7), edge(7, 6), edge(6, 4), edge(4, 0)};
+  REQUIRE(belt.size() == 6);
+  REQUIRE(!belt.count(-1));
+  soapfilm::Departure astray = soapfilm::Departure::none;
+  CHECK(soapfilm::classify_missing(s.network(), curve_of, belt, params, &astray) == MissingCycle::not_found);
+  // Every corner is a three-edge corner the walks turn at, into a face.
+  CHECK(astray != soapfilm::Departure::none);
 
   // The bottom face deleted by hand: its edges bound one patch each, a walk
   // closes over it and nothing refuses it.
