@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "commands.hpp"
 #include "fidelity_causes.hpp"
@@ -154,7 +155,12 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, std::map<std::string, EndDistances>> end_distances;
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
-      const auto strokes = teacher_forced(rec, *corrector, opt);
+      std::vector<TeacherForcedStroke> strokes;
+      try {
+        strokes = teacher_forced(rec, *corrector, opt);
+      } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(f.string() + ": " + e.what() + " (--track chooses one)");
+      }
       const std::string group = fidelity_group(rec.header);
       const std::string session = f.stem().string();
       if (!o->csv_dir.empty()) write_text_file(fs::path(o->csv_dir) / (session + ".csv"), teacher_forced_csv(strokes));

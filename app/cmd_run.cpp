@@ -12,6 +12,7 @@
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/lab/experiment_runner.hpp"
 #ifdef SKETCHLAB_HAVE_VIEWER
+#include "sketchlab/viewer/display.hpp"
 #include "sketchlab/viewer/render_png.hpp"
 #endif
 
@@ -85,10 +86,21 @@ void add_run_command(CLI::App& app, int& exit_code) {
     options.timings = !opts->no_timings;
     options.progress = [&progress](const Progress& p) { progress.update(p); };
     options.renderer = make_renderer();
-    if (config.outputs.pictures && !options.renderer)
-      std::cerr << "warning: pictures requested but this build has no viewer (VTK); skipping them\n";
+    // Debian's VTK 9.1 is built for X alone (no EGL, no OSMesa): its
+    // offscreen windows still need a display, so without one there are no
+    // pictures, and the run says so up front instead of after the cases.
+#ifdef SKETCHLAB_HAVE_VIEWER
+    if (config.outputs.pictures) options.pictures_unavailable = viewer::display_problem();
+#else
+    options.pictures_unavailable = "this build has no viewer (VTK)";
+#endif
+    if (config.outputs.pictures && !options.pictures_unavailable.empty())
+      std::cerr << "warning: no pictures: " << options.pictures_unavailable << "\n";
     const RunSummary summary = run_experiment(config, host, options);
     progress.finish();
+    // Pictures that failed while drawing (noted in the report too).
+    for (const auto& note : summary.provenance.notes)
+      if (note.rfind("no pictures:", 0) != 0) std::cerr << "warning: " << note << "\n";
 
     for (const auto& c : summary.cases)
       if (!c.ok)

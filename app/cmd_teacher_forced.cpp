@@ -3,6 +3,7 @@
 // the sketch rebuilt from a reference track and compares with the reference.
 #include <cstdlib>
 #include <iomanip>
+#include <stdexcept>
 #include <iostream>
 
 #include "commands.hpp"
@@ -56,7 +57,12 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
     TeacherForcedOptions opt;
     opt.track = o->track;
     opt.snap_tolerance = o->snap_tolerance;
-    const auto strokes = teacher_forced(rec, *corrector, opt);
+    std::vector<TeacherForcedStroke> strokes;
+    try {
+      strokes = teacher_forced(rec, *corrector, opt);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(o->recording + ": " + e.what() + " (--track chooses one)");
+    }
     if (!o->csv.empty()) write_text_file(o->csv, teacher_forced_csv(strokes));
     const TeacherForcedSummary s = summarize(strokes);
     std::cout << "strokes " << s.strokes << "\ncompared " << s.compared << "\nerrors " << s.errors << "\n";

@@ -19,12 +19,11 @@ void add_view_command(CLI::App& app, int& exit_code) {
       "Interactive viewer: one viewport per stack of CONFIG, replay RECORDING (play, step, "
       "scrub) and draw new strokes with a tablet or mouse that every stack corrects live "
       "(press h in the window for the keys)");
+  // Overrides are positional key.path=value, as for `run` and `vr`.
   cmd->add_option("files", *positional,
-                  "[CONFIG.yaml] [RECORDING.jsonl]: an experiment or stack config (default: one "
-                  "freehand stack) and a recording to replay")
-      ->expected(0, 2)
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", o->overrides, "Config override key.path=value (repeatable)");
+                  "An experiment or stack config (default: one freehand stack), a recording to replay "
+                  "(.jsonl), and config overrides key.path=value, in any order")
+      ->type_name("[CONFIG.yaml] [RECORDING.jsonl] [key.path=value ...]");
   cmd->add_option("--record", o->record,
                   "Live recording to write (append + flush per event; default "
                   "sketchlab-live-<UTC time>.jsonl)");
@@ -50,6 +49,12 @@ void add_view_command(CLI::App& app, int& exit_code) {
     o->height = std::stoi(m[2]);
     for (const std::string& f : *positional) {
       const std::filesystem::path p = f;
+      if (f.find('=') != std::string::npos) {
+        o->overrides.push_back(f);
+        continue;
+      }
+      if (!std::filesystem::is_regular_file(p))
+        throw std::runtime_error("view: " + f + ": no such file (expected CONFIG.yaml, RECORDING.jsonl or key.path=value)");
       if (p.extension() == ".jsonl") {
         if (o->recording) throw std::runtime_error("view: two recordings given");
         o->recording = p;

@@ -8,6 +8,8 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   # kernel
   libeigen3-dev nlohmann-json3-dev libyaml-cpp-dev
+  # lab: SHA-256 of input files for provenance (OpenSSL libcrypto)
+  libssl-dev
   # plugin host (Boost.DLL is header-only but needs Boost.Filesystem)
   libboost-dev libboost-filesystem-dev
   # command line, tests

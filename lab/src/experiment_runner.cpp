@@ -12,6 +12,7 @@
 #include "sketchlab/io/stroke_csv.hpp"
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/lab/report.hpp"
+#include "sketchlab/lab/run_folder.hpp"
 #include "sketchlab/lab/utc_timestamp.hpp"
 
 namespace sketchlab {
@@ -103,13 +104,18 @@ std::size_t RunSummary::failed() const {
 
 RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host, const RunOptions& options) {
   const auto start = Clock::now();
-  const std::vector<SweepCase> variants = expand_sweep(config);
+  std::vector<SweepCase> variants = expand_sweep(config);
+  // Everything that can be checked without running is checked before the
+  // run folder exists.
+  std::vector<StackConfig> resolved;
+  for (auto& v : variants) resolved.push_back(v.stack = resolve_stack(v.stack, host));
 
   RunSummary summary;
-  summary.run_dir = config.outputs.dir /
-                    (config.outputs.timestamp ? config.name + "-" + utc_timestamp() : config.name);
-  fs::create_directories(summary.run_dir);
-  write_text_file(summary.run_dir / "config.yaml", config.resolved_yaml);
+  summary.provenance = collect_provenance(config, resolved, host);
+  if (!options.timings) summary.provenance.started_utc.clear();  // byte-identical reruns
+  summary.run_dir = create_unique_folder(
+      config.outputs.dir, config.outputs.timestamp ? config.name + "-" + utc_timestamp() : config.name);
+  write_text_file(summary.run_dir / "config.yaml", experiment_yaml_relative_to(config, summary.run_dir));
 
   for (const auto& rec : config.recordings)
     for (const auto& v : variants) {
@@ -122,7 +128,11 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
 
   // The final sketch of each case, kept for the pictures drawn per recording
   // once every case has run.
-  const bool pictures = config.outputs.pictures && options.renderer;
+  const bool pictures = config.outputs.pictures && options.renderer && options.pictures_unavailable.empty();
+  if (config.outputs.pictures && !pictures)
+    summary.provenance.notes.push_back(
+        "no pictures: " + (options.pictures_unavailable.empty() ? std::string("no renderer in this build")
+                                                                : options.pictures_unavailable));
   std::vector<std::optional<Sketch>> final_sketches(summary.cases.size());
 
   std::mutex progress_mutex;
@@ -147,7 +157,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
         const ReplayResult r = replay(*input, stack);
         write_case_outputs(config.outputs, r, options.timings, c.dir);
         if (pictures) final_sketches[i] = pictured(r.session.sketch());
-        std::string header = "# recording: " + c.recording.string() + "\n";
+        std::string header = case_provenance_comment(summary.provenance, c.variant.stack, c.recording, c.dir);
         for (const auto& [path, value] : c.variant.point) header += "# sweep: " + path + " = " + value + "\n";
         write_text_file(c.dir / "case.yaml", header + stack_to_yaml(c.variant.stack));
         c.metrics = compute_metrics(r);
@@ -187,13 +197,15 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
       try {
         render_recording(options.renderer, dir, cases, sketches);
       } catch (const std::exception& e) {
-        // A missing display must not lose the numbers: note it and go on.
+        // A failed picture must not lose the numbers: note it and go on.
         write_text_file(dir / "side_by_side.error.txt", std::string(e.what()) + "\n");
+        summary.provenance.notes.push_back("no picture of " + rec.stem().string() + ": " + e.what());
       }
     }
   }
   summary.wall_s = options.timings ? seconds_since(start) : 0.0;
   if (config.outputs.report) write_report(summary, config);
+  write_text_file(summary.run_dir / "provenance.yaml", provenance_yaml(summary.provenance, summary.run_dir));
   return summary;
 }
 

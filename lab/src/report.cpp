@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "sketchlab/io/text_file.hpp"
+#include "sketchlab/lab/provenance.hpp"
 
 namespace sketchlab {
 namespace fs = std::filesystem;
@@ -256,7 +257,9 @@ void write_report(const RunSummary& s, const ExperimentConfig& config) {
     << " failed, " << number(s.wall_s) << " s. Configuration: <a href=\"config.yaml\">config.yaml</a>; "
     << "metrics: <a href=\"metrics.csv\">metrics.csv</a>, <a href=\"metrics.json\">metrics.json</a>.</p>\n";
   for (const auto& rec : config.recordings) h << recording_section(s, rec);
-  h << sweep_section(s, config) << "</body></html>\n";
+  h << sweep_section(s, config);
+  h << provenance_html(s.provenance, s.run_dir);  // provenance.hpp
+  h << "</body></html>\n";
   write_text_file(s.run_dir / "report.html", h.str());
 }
 

@@ -27,6 +27,42 @@ StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host
   return s;
 }
 
+namespace {
+
+void resolve_choice(PluginChoice& choice, PluginKind kind, const PluginHost& host,
+                    const std::string& recording_param = {}) {
+  try {
+    auto given = choice.params;
+    // A placeholder for the path each case sets: any string is valid.
+    if (!recording_param.empty()) given[recording_param] = std::string();
+    const Params resolved = host.resolve_params(kind, choice.plugin, given);
+    choice.params = resolved.values();
+    if (!recording_param.empty()) choice.params.erase(recording_param);
+  } catch (const ParamError& e) {
+    rethrow_param_error(e, choice);
+  } catch (const PluginError& e) {
+    throw ConfigError(choice.location.to_string() + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+StackConfig resolve_stack(const StackConfig& stack, const PluginHost& host) {
+  StackConfig s = stack;
+  if (!s.input) {
+    PluginChoice choice;
+    choice.plugin = default_input_plugin;
+    choice.location = stack.location;
+    s.input = choice;
+  }
+  const LoadedPlugin* input = host.find(PluginKind::input, s.input->plugin);
+  resolve_choice(*s.input, PluginKind::input, host, input ? input->descriptor->recording_param : std::string());
+  resolve_choice(s.corrector, PluginKind::corrector, host);
+  if (s.surfacer) resolve_choice(*s.surfacer, PluginKind::surfacer, host);
+  if (!s.time_budget) s.time_budget = default_time_budget_s;
+  return s;
+}
+
 std::shared_ptr<Input> instantiate_input(const StackConfig& stack, const PluginHost& host,
                                          const std::filesystem::path& recording) {
   PluginChoice choice;

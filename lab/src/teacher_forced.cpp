@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <time.h>
@@ -115,6 +116,13 @@ double thread_cpu_ms() {
   return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
 }
 
+std::vector<std::string> reference_tracks(const Recording& rec) {
+  std::set<std::string> tracks;
+  for (const Event& e : rec.events)
+    if (const auto* r = std::get_if<ReferenceEvent>(&e.payload)) tracks.insert(r->track);
+  return {tracks.begin(), tracks.end()};
+}
+
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector& corrector,
                                                 const TeacherForcedOptions& opt) {
   if (opt.resample < 2) throw std::invalid_argument("teacher_forced: resample must be >= 2");
@@ -123,6 +131,16 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
   for (const Event& e : rec.events)
     if (const auto* r = std::get_if<ReferenceEvent>(&e.payload))
       if (r->track == opt.track && !reference.count(r->stroke)) reference[r->stroke] = r->curve;
+  // Nothing to compare with: zeros would read as a result.
+  if (reference.empty()) {
+    const auto tracks = reference_tracks(rec);
+    std::string have;
+    for (const auto& t : tracks) have += (have.empty() ? "" : ", ") + t;
+    throw std::invalid_argument("no reference curves on track '" + opt.track + "'; " +
+                                (tracks.empty() ? std::string("the recording has no reference tracks (its "
+                                                              "strokes were recorded without a reference)")
+                                                : "the recording has: " + have));
+  }
 
   Sketch sketch;
   sketch.workspace = rec.header.workspace;

@@ -19,9 +19,9 @@ _host = None
 
 
 def plugin_search_paths():
-    """The directories plugins load from (PluginHost.default_search_paths): the
-    plugins of the build or install tree this package belongs to, then
-    SKETCHLAB_PLUGIN_PATH's."""
+    """The directories plugins load from (PluginHost.default_search_paths):
+    SKETCHLAB_PLUGIN_PATH's, then the plugins of the build or install tree
+    this package belongs to."""
     return [str(d) for d in PluginHost.default_search_paths()]
 
 

@@ -26,7 +26,7 @@ nlohmann::json cube_metrics(const fs::path& dir, double noise) {
   std::ofstream(exp) << "experiment: " << tag << "\nrecordings: [" << rec.string() << "]\n"
                      << "stacks: [{name: freehand, corrector: {plugin: freehand, params: {rules: sketchlab}}}]\n"
                      << "outputs: {dir: " << (dir / "runs").string()
-                     << ", timestamp: false, report: true, ply: false, obj: false}\n";
+                     << ", timestamp: false, report: true, ply: false, obj: false, mlp: false, pictures: false}\n";
   REQUIRE(run_cli("run " + exp.string(), dir / (tag + "_run.txt")) == 0);
   const auto j = nlohmann::json::parse(read_text_file(dir / "runs" / tag / "metrics.json"));
   return j["cases"][0]["metrics"];

@@ -22,7 +22,7 @@ fs::path write_experiment(const fs::path& dir, const std::string& recording) {
   std::ofstream(file) << "experiment: e2e\n"
                       << "recordings: [" << recording << "]\n"
                       << "stacks:\n  - name: freehand\n    corrector: {plugin: freehand}\n"
-                      << "outputs: {dir: " << (dir / "runs").string() << ", timestamp: false, ply: true, obj: true}\n";
+                      << "outputs: {dir: " << (dir / "runs").string() << ", timestamp: false, pictures: false}\n";
   return file;
 }
 

@@ -29,11 +29,8 @@ YAML::Node load_yaml(const std::filesystem::path& file);
 StackConfig read_experiment_stack(const YAML::Node& root, const std::filesystem::path& file,
                                   const std::vector<Override>& overrides, std::size_t index);
 
-// True when `name` matches `pattern` ('*' any run, '?' one character; a
-// leading '.' in name must be matched literally, as in a shell).
-bool glob_match(std::string_view pattern, std::string_view name);
-
-// Files named by `pattern` (wildcards allowed in its last component only),
+// Regular files named by `pattern` (glob(3): *, ? and [...] in any
+// component; leading dots matched only explicitly),
 // relative to `base` unless absolute: absolute, lexically normal, sorted.
 // Throws std::runtime_error when nothing matches or the pattern is invalid.
 std::vector<std::filesystem::path> expand_pattern(const std::string& pattern,

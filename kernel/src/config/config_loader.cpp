@@ -434,7 +434,7 @@ ExperimentConfig load_experiment(const fs::path& file, const std::vector<Overrid
     reader.fail(recordings, recordings_path,
                 "'recordings' must be a non-empty list of files or globs, not " +
                     (recordings.IsSequence() ? std::string("an empty list") : describe_node(recordings)) +
-                    " (allowed: paths relative to the config file, with * and ? in file names)");
+                    " (allowed: paths relative to the config file, with glob(3) wildcards *, ? and [...])");
   }
   for (const auto& [node, path] : patterns) {
     const std::string pattern = reader.read_string(node, path);

@@ -1,4 +1,7 @@
+#include <glob.h>
+
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "config_internal.hpp"
@@ -7,44 +10,18 @@ namespace sketchlab::config_detail {
 
 namespace fs = std::filesystem;
 
-bool glob_match(std::string_view pattern, std::string_view name) {
-  if (!name.empty() && name[0] == '.' && (pattern.empty() || pattern[0] != '.')) return false;
-  // Iterative matcher with one backtrack point (the last '*'): linear in
-  // practice, no recursion blow-up on patterns like "*a*a*a*b".
-  std::size_t p = 0, n = 0, star = std::string_view::npos, resume = 0;
-  while (n < name.size()) {
-    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == name[n])) {
-      ++p;
-      ++n;
-    } else if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      resume = n;
-    } else if (star != std::string_view::npos) {
-      p = star + 1;
-      n = ++resume;
-    } else {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*') ++p;
-  return p == pattern.size();
-}
-
+// glob(3) (POSIX): *, ? and [...] in any component, file names starting with
+// '.' only when the pattern says so; its own sort is locale-dependent, ours
+// is by path.
 std::vector<fs::path> expand_pattern(const std::string& pattern, const fs::path& base) {
   if (pattern.empty()) throw std::runtime_error("empty recording name");
   const fs::path full = (fs::path(pattern).is_absolute() ? fs::path(pattern) : base / pattern)
                             .lexically_normal();
-  const fs::path dir = full.parent_path();
-  const std::string leaf = full.filename().string();
-  if (dir.string().find_first_of("*?") != std::string::npos) {
-    throw std::runtime_error("'" + pattern +
-                             "': wildcards are allowed only in the file name, not in directories");
-  }
-  if (leaf.empty()) throw std::runtime_error("'" + pattern + "' names a directory, not a file");
+  if (full.filename().empty()) throw std::runtime_error("'" + pattern + "' names a directory, not a file");
 
   std::vector<fs::path> files;
   std::error_code ec;
-  if (leaf.find_first_of("*?") == std::string::npos) {
+  if (full.string().find_first_of("*?[") == std::string::npos) {
     if (!fs::is_regular_file(full, ec)) {
       throw std::runtime_error("recording '" + pattern + "' does not exist (looked for " +
                                full.string() + ")");
@@ -52,15 +29,15 @@ std::vector<fs::path> expand_pattern(const std::string& pattern, const fs::path&
     files.push_back(full);
     return files;
   }
-  if (fs::is_directory(dir, ec)) {
-    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-      if (it->is_regular_file(ec) && glob_match(leaf, it->path().filename().string())) {
-        files.push_back(it->path().lexically_normal());
-      }
-    }
-  }
+  glob_t g{};
+  const std::unique_ptr<glob_t, void (*)(glob_t*)> owner(&g, globfree);
+  const int rc = glob(full.c_str(), GLOB_NOSORT, nullptr, &g);
+  if (rc == GLOB_NOSPACE) throw std::runtime_error("'" + pattern + "': out of memory expanding it");
+  if (rc == 0)
+    for (std::size_t i = 0; i < g.gl_pathc; ++i)
+      if (fs::is_regular_file(g.gl_pathv[i], ec)) files.push_back(fs::path(g.gl_pathv[i]).lexically_normal());
   if (files.empty()) {
-    throw std::runtime_error("'" + pattern + "' matches no file (looked in " + dir.string() + ")");
+    throw std::runtime_error("'" + pattern + "' matches no file (looked in " + full.parent_path().string() + ")");
   }
   std::sort(files.begin(), files.end());
   return files;

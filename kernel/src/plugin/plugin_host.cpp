@@ -126,16 +126,8 @@ fs::path kernel_library_dir() {
 std::vector<fs::path> PluginHost::default_search_paths() {
   std::vector<fs::path> dirs;
   std::set<fs::path> seen;
-  // The plugins of the tree this kernel belongs to (not a build tree's
-  // compiled-in path: an installed kernel must not pick up the plugins of
-  // the build it was installed from).
-  if (const fs::path lib = kernel_library_dir(); !lib.empty())
-    add_existing_dir(dirs, seen, lib / ".." / SKETCHLAB_PLUGIN_SUBDIR);
-
-  std::error_code ec;
-  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) add_existing_dir(dirs, seen, exe.parent_path() / ".." / SKETCHLAB_PLUGIN_SUBDIR);
-
+  // The user's directories first: the first copy of a name wins, so a
+  // plugin there overrides a bundled one.
   if (const char* env = std::getenv("SKETCHLAB_PLUGIN_PATH")) {
     std::string list = env;
     std::size_t start = 0;
@@ -145,6 +137,18 @@ std::vector<fs::path> PluginHost::default_search_paths() {
       add_existing_dir(dirs, seen, list.substr(start, end - start));
       start = end + 1;
     }
+  }
+  // Then the plugins of the tree the executable belongs to (the install
+  // tree, or the build tree for a binary run from it; never a build tree's
+  // compiled-in path). Only a program outside any sketchlab tree (python3
+  // with the module) falls back to the tree of the kernel library it loaded.
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path exe_plugins = ec ? fs::path() : exe.parent_path() / ".." / SKETCHLAB_PLUGIN_SUBDIR;
+  if (!exe_plugins.empty() && fs::is_directory(exe_plugins, ec)) {
+    add_existing_dir(dirs, seen, exe_plugins);
+  } else if (const fs::path lib = kernel_library_dir(); !lib.empty()) {
+    add_existing_dir(dirs, seen, lib / ".." / SKETCHLAB_PLUGIN_SUBDIR);
   }
   return dirs;
 }
@@ -251,10 +255,9 @@ const LoadedPlugin* PluginHost::find(PluginKind kind, const std::string& name) c
 
 namespace {
 
-template <class T>
-std::shared_ptr<T> make_object(const PluginHost& host, PluginKind kind, const std::string& name,
-                               const std::map<std::string, ParamValue>& given,
-                               Factory<T> PluginDescriptor::*factory) {
+// The plugin `name` of `kind`; throws PluginError naming why it is missing
+// (a copy that did not load) and the plugins of that kind that are loaded.
+const LoadedPlugin& require_plugin(const PluginHost& host, PluginKind kind, const std::string& name) {
   const LoadedPlugin* plugin = host.find(kind, name);
   if (!plugin) {
     std::string message = "unknown " + std::string(to_string(kind)) + " '" + name + "'";
@@ -270,6 +273,14 @@ std::shared_ptr<T> make_object(const PluginHost& host, PluginKind kind, const st
                                  : "; available: " + available;
     throw PluginError(message);
   }
+  return *plugin;
+}
+
+template <class T>
+std::shared_ptr<T> make_object(const PluginHost& host, PluginKind kind, const std::string& name,
+                               const std::map<std::string, ParamValue>& given,
+                               Factory<T> PluginDescriptor::*factory) {
+  const LoadedPlugin* plugin = &require_plugin(host, kind, name);
 
   // ParamError propagates unchanged: callers map its parameter name back to
   // the config line that set it.
@@ -296,6 +307,11 @@ std::shared_ptr<T> make_object(const PluginHost& host, PluginKind kind, const st
 }
 
 }  // namespace
+
+Params PluginHost::resolve_params(PluginKind kind, const std::string& name,
+                                  const std::map<std::string, ParamValue>& params) const {
+  return validate_params(require_plugin(*this, kind, name).descriptor->params, params);
+}
 
 std::shared_ptr<Corrector> PluginHost::make_corrector(
     const std::string& name, const std::map<std::string, ParamValue>& params) const {

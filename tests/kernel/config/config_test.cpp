@@ -60,7 +60,7 @@ const std::string experiment_yaml =
     "  - corrector: {plugin: freehand}\n"          // 18
     "outputs:\n"                                   // 19
     "  dir: out\n"                                 // 20
-    "  ply: true\n";                               // 21
+    "  ply: false\n";                              // 21
 
 std::string error_of(const std::function<void()>& f) {
   try {
@@ -112,9 +112,15 @@ TEST_CASE("a valid experiment loads with globs expanded and names assigned", "[c
   CHECK(c.stacks[1].surfacer->params.at("samples") == ParamValue{std::int64_t{8}});
 
   CHECK(c.outputs.dir == "out");
-  CHECK(c.outputs.ply);
-  CHECK_FALSE(c.outputs.obj);       // default
-  CHECK(c.outputs.sketch_json);     // default
+  CHECK_FALSE(c.outputs.ply);  // turned off
+  // Every other output is on by default.
+  CHECK(c.outputs.obj);
+  CHECK(c.outputs.sketch_json);
+  CHECK(c.outputs.stroke_csv);
+  CHECK(c.outputs.mlp);
+  CHECK(c.outputs.pictures);
+  CHECK(c.outputs.report);
+  CHECK(c.outputs.timestamp);
 }
 
 TEST_CASE("a valid stack file loads, named after the file by default", "[config]") {
@@ -213,10 +219,14 @@ TEST_CASE("a recording glob that matches nothing is named with its line", "[conf
   CHECK_THAT(error_of([&] { load_experiment(missing); }),
              Catch::StartsWith(missing.string() + ":1: recording 'recs/zzz.jsonl' does not exist"));
 
+  // glob(3): wildcards in directories and character classes too.
   const fs::path wild_dir = s.write("wild.yaml",
-                                    "recordings: ['*/a.jsonl']\nstacks: [{corrector: freehand}]\n");
-  CHECK_THAT(error_of([&] { load_experiment(wild_dir); }),
-             Catch::Contains("wildcards are allowed only in the file name"));
+                                    "recordings: ['*/[ac]*.jsonl']\nstacks: [{corrector: freehand}]\n");
+  const auto w = load_experiment(wild_dir);
+  REQUIRE(w.recordings.size() == 3);
+  CHECK(w.recordings[0] == fs::absolute(s.dir / "other/c.jsonl").lexically_normal());
+  CHECK(w.recordings[1].filename() == "a.jsonl");
+  CHECK(w.recordings[2].filename() == "a1.jsonl");  // not .hidden.jsonl
 
   // '?' matches exactly one character: recs/a?.jsonl is a1 only.
   const fs::path one = s.write("one.yaml", "recordings: ['recs/a?.jsonl']\nstacks: [{corrector: x}]\n");

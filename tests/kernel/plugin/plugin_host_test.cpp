@@ -340,9 +340,11 @@ TEST_CASE("default search paths: existing directories, canonical, without duplic
     CHECK(fs::is_directory(d));
     CHECK(d == fs::canonical(d));
   }
-  // The build tree's plugin directory comes first when it exists.
+  // SKETCHLAB_PLUGIN_PATH first (a user's plugin overrides a bundled one),
+  // the build tree's plugin directory after it.
+  REQUIRE_FALSE(dirs.empty());
+  CHECK(dirs.front() == canonical_fixtures);
   if (fs::is_directory(SKETCHLAB_BUILD_PLUGIN_DIR)) {
-    REQUIRE_FALSE(dirs.empty());
-    CHECK(dirs.front() == fs::canonical(SKETCHLAB_BUILD_PLUGIN_DIR));
+    CHECK(dirs.back() == fs::canonical(SKETCHLAB_BUILD_PLUGIN_DIR));
   }
 }

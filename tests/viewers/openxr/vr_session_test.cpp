@@ -259,7 +259,7 @@ TEST_CASE("a scripted VR session records exactly what was done and replays ident
     // stroke considered; everything else must match byte for byte).
     std::ofstream(dir / "replay.yaml") << "experiment: vr-replay\nrecordings: [vr.jsonl]\n"
                                           "stacks:\n  - name: cassie\n    corrector: {plugin: cassie, params: {mirror: plane}}\n"
-                                          "outputs: {dir: runs, timestamp: false}\n";
+                                          "outputs: {dir: runs, timestamp: false, pictures: false}\n";
     const CliRun ran = run_captured("cd " + dir.string() + " && " SKETCHLAB_CLI " run replay.yaml --no-timings");
     INFO(ran.output);
     REQUIRE(ran.status == 0);

@@ -14,7 +14,7 @@
 //   experiment: default
 //   recordings: [../data/recordings/*.jsonl]   # files or globs, relative to the file
 //   stacks: [ {name: freehand, corrector: {plugin: freehand}}, ... ]
-//   outputs: {dir: runs, sketch_json: true, stroke_csv: true, ply: false, obj: false}
+//   outputs: {dir: runs, ply: false}           # every output is on by default
 //
 // Overrides `key.path=value` (e.g. `stacks.0.corrector.params.delta=0.03`,
 // `outputs.dir=/tmp/x`) are applied to the YAML tree before validation; the
@@ -63,16 +63,17 @@ struct StackConfig {
   SourceLocation location;
 };
 
+// Every output is on unless the config turns it off (`outputs: {ply: false}`).
 struct OutputsConfig {
   std::filesystem::path dir = "runs";  // relative to the working directory
   bool sketch_json = true;
   bool stroke_csv = true;
-  bool ply = false;
-  bool obj = false;
-  bool mlp = false;       // MeshLab project per recording (all stacks' layers)
-  bool pictures = false;  // offscreen renders, side by side (needs the viewer and X)
-  bool report = false;    // report.html, metrics.csv, metrics.json
-  bool timestamp = true;  // run folder <dir>/<experiment>-<UTC timestamp>; false: <dir>/<experiment>
+  bool ply = true;
+  bool obj = true;
+  bool mlp = true;       // MeshLab project per recording (all stacks' layers)
+  bool pictures = true;  // offscreen renders, side by side (needs the viewer)
+  bool report = true;    // report.html, metrics.csv, metrics.json
+  bool timestamp = true;  // run folder <dir>/<experiment>-<UTC timestamp>[-N]; false: <dir>/<experiment>[-N]
 };
 
 // One sweep axis: a parameter path inside a stack (`stacks.<index or *>....`)

@@ -60,12 +60,13 @@ class PluginHost {
   explicit PluginHost(PluginLoadOptions options = PluginLoadOptions::from_environment())
       : options_(options) {}
 
-  // The plugin directory of the tree the kernel library belongs to
-  // (<libdir>/../lib/sketchlab/plugins: the build tree's, or the install
-  // tree's once installed, also for programs outside it such as python3),
-  // the one next to the executable (<exe>/../lib/sketchlab/plugins), then
-  // each entry of SKETCHLAB_PLUGIN_PATH
-  // (colon-separated), existing directories only, without duplicates.
+  // Each entry of SKETCHLAB_PLUGIN_PATH (colon-separated) first, so that a
+  // user's plugin overrides a bundled one of the same name; then the plugin
+  // directory of the executable's tree (<exe>/../lib/sketchlab/plugins: the
+  // install tree, or the build tree for a binary run from it). Only when the
+  // executable has none (python3 loading the module) the one of the tree the
+  // kernel library belongs to (<libdir>/../lib/sketchlab/plugins). Existing
+  // directories only, without duplicates.
   static std::vector<std::filesystem::path> default_search_paths();
 
   // Loads every sketchlab_*.so in the directories (sorted by file name). A
@@ -80,6 +81,12 @@ class PluginHost {
   const std::vector<PluginLoadError>& errors() const { return errors_; }
 
   const LoadedPlugin* find(PluginKind kind, const std::string& name) const;
+
+  // Every parameter of plugin `name` of `kind`, defaults filled in, validated
+  // like make_*; creates nothing. Throws PluginError (unknown plugin, naming
+  // the available ones) or ParamError.
+  Params resolve_params(PluginKind kind, const std::string& name,
+                        const std::map<std::string, ParamValue>& params) const;
 
   // Validates `params` against the plugin's specs and creates the object. The
   // returned pointer keeps the library loaded.

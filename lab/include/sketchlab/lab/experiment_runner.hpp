@@ -3,9 +3,14 @@
 // case, run in parallel; outputs are deterministic (same config, same bytes,
 // timings aside).
 //
-// Run folder <outputs.dir>/<experiment>[-<UTC timestamp>]/ holds:
-//   config.yaml                   the resolved experiment (run it again to repeat)
-//   <recording>/<stack>/          per case: case.yaml (the resolved stack),
+// Run folder <outputs.dir>/<experiment>[-<UTC timestamp>][-N]/ (-N when the
+// name is taken: a run never writes into an existing folder) holds:
+//   config.yaml                   the resolved experiment, recordings relative
+//                                 to the folder (run it again to repeat)
+//   provenance.yaml               build, commit, plugins, input hashes (provenance.hpp)
+//   <recording>/<stack>/          per case: case.yaml (the resolved stack,
+//                                 every parameter, defaults included, headed
+//                                 by its provenance),
 //                                 sketch.json, strokes.csv,
 //                                 curves.ply, raw_strokes.ply, nodes.ply,
 //                                 patches.ply, sketch.obj (as enabled)
@@ -21,13 +26,14 @@
 
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/lab/metrics.hpp"
+#include "sketchlab/lab/provenance.hpp"
 #include "sketchlab/lab/stack.hpp"
 
 namespace sketchlab {
 
 struct CaseResult {
   std::filesystem::path recording;
-  SweepCase variant;
+  SweepCase variant;  // its stack resolved (resolve_stack): every parameter
   std::filesystem::path dir;  // the case's output folder
   bool ok = false;
   std::string error;  // why the case failed
@@ -51,17 +57,25 @@ struct RunOptions {
   bool timings = true;  // false: latencies written as 0 (byte-identical reruns)
   std::function<void(const Progress&)> progress;  // called from worker threads, serialised
   Renderer renderer;    // used when outputs.pictures is set; may be empty
+  // Why pictures cannot be drawn (no viewer in this build, no X display), if
+  // so: with outputs.pictures set, it becomes a note of the run (terminal,
+  // report, provenance.yaml) and the renderer is not called.
+  std::string pictures_unavailable;
 };
 
 struct RunSummary {
   std::filesystem::path run_dir;
   std::vector<CaseResult> cases;  // recordings x variants, in config order
   double wall_s = 0.0;
+  RunProvenance provenance;  // notes include pictures not drawn, and why
   std::size_t failed() const;
 };
 
-// Throws ConfigError for sweep errors before any case runs; case failures
-// (plugin errors, bad recordings) are reported in their CaseResult.
+// Resolves and validates every case first (sweep, plugin names, parameter
+// names and values: ConfigError naming file:line and the allowed values) and
+// hashes the inputs; only then creates the run folder, so an experiment that
+// cannot run writes nothing. Failures while a case runs (plugin errors, bad
+// recordings) are reported in its CaseResult.
 RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host,
                           const RunOptions& options);
 

@@ -24,6 +24,13 @@ struct StackInstance {
 // plugin names the available ones.
 StackInstance instantiate_stack(const StackConfig& stack, const PluginHost& host);
 
+// `stack` with every parameter of its plugins written out, defaults
+// included (the input too: default_input_plugin when it names none; its
+// recording parameter is left out, each case sets it), validated as
+// instantiate_stack does and with the same errors, without creating any
+// plugin object: what a case runs, checked before anything is written.
+StackConfig resolve_stack(const StackConfig& stack, const PluginHost& host);
+
 // Creates the stack's input (default_input_plugin when it names none); an
 // input that plays recording files (PluginDescriptor::recording_param, e.g.
 // replay's `path`) gets `recording` there.

@@ -64,7 +64,12 @@ struct TeacherForcedStroke {
 // shared machine wall time also measures other processes.
 double thread_cpu_ms();
 
-// Throws std::invalid_argument for resample < 2 or a negative tolerance.
+// The reference tracks of a recording (ReferenceEvent::track), sorted.
+std::vector<std::string> reference_tracks(const Recording& recording);
+
+// Throws std::invalid_argument for resample < 2, a negative tolerance, or a
+// recording without reference curves on options.track (the message names
+// the tracks it has).
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corrector& corrector,
                                                 const TeacherForcedOptions& options = {});
 

@@ -1,0 +1,33 @@
+# The targets scripts/run-default.sh builds hold what `sketchlab run` needs
+# (every bundled plugin) and none of the tests or benchmarks (issue 21: the
+# default run took 41 min building the whole suite for a 23 s experiment).
+#   cmake -DSCRIPT=scripts/run-default.sh -DBUILD_DIR=build -DNINJA=ninja -P check_run_default_targets.cmake
+file(STRINGS ${SCRIPT} _lines REGEX "scripts/build.sh")
+list(LENGTH _lines _n)
+if(NOT _n EQUAL 1)
+  message(FATAL_ERROR "${SCRIPT}: expected one scripts/build.sh line, found ${_n}")
+endif()
+string(REGEX REPLACE ".*scripts/build.sh\"?" "" _targets "${_lines}")
+string(STRIP "${_targets}" _targets)
+if(_targets STREQUAL "")
+  message(FATAL_ERROR "${SCRIPT}: scripts/build.sh without targets builds everything")
+endif()
+separate_arguments(_targets UNIX_COMMAND "${_targets}")
+execute_process(COMMAND ${NINJA} -C ${BUILD_DIR} -t inputs ${_targets}
+                OUTPUT_VARIABLE _inputs RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "ninja -t inputs ${_targets} failed (${_rc})")
+endif()
+string(REGEX MATCHALL "[^\n]*(tests|bench)/[^\n]*" _extra "${_inputs}")
+if(_extra)
+  list(GET _extra 0 _first)
+  message(FATAL_ERROR "${SCRIPT} builds tests or benchmarks (${_targets}), e.g. ${_first}")
+endif()
+file(GLOB _plugins RELATIVE ${BUILD_DIR} ${BUILD_DIR}/lib/sketchlab/plugins/sketchlab_*.so)
+foreach(_p IN LISTS _plugins)
+  string(FIND "${_inputs}" "${_p}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "${SCRIPT} does not build the plugin ${_p} (targets: ${_targets})")
+  endif()
+endforeach()
+message(STATUS "${SCRIPT} builds ${_targets}: every plugin, no tests or benchmarks")
