@@ -123,6 +123,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
   // The final sketch of each case, kept for the pictures drawn per recording
   // once every case has run.
   const bool pictures = config.outputs.pictures && options.renderer;
+  const bool scenes = config.outputs.report && options.scene_exporter;
   std::vector<std::optional<Sketch>> final_sketches(summary.cases.size());
 
   std::mutex progress_mutex;
@@ -146,7 +147,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
         auto input = instantiate_input(c.variant.stack, host, c.recording);
         const ReplayResult r = replay(*input, stack);
         write_case_outputs(config.outputs, r, options.timings, c.dir);
-        if (pictures) final_sketches[i] = pictured(r.session.sketch());
+        if (pictures || scenes) final_sketches[i] = pictured(r.session.sketch());
         std::string header = "# recording: " + c.recording.string() + "\n";
         for (const auto& [path, value] : c.variant.point) header += "# sweep: " + path + " = " + value + "\n";
         write_text_file(c.dir / "case.yaml", header + stack_to_yaml(c.variant.stack));
@@ -183,6 +184,16 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
     const fs::path dir = summary.run_dir / rec.stem();
     fs::create_directories(dir);
     if (config.outputs.mlp) write_meshlab_project(dir, cases);
+    // On this thread: the exporter's VTK objects are not thread-safe.
+    if (scenes)
+      for (std::size_t k = 0; k < cases.size(); ++k) {
+        if (!cases[k]->ok || !*sketches[k]) continue;
+        try {
+          write_text_file(cases[k]->dir / "scene.gltf", options.scene_exporter(**sketches[k]));
+        } catch (const std::exception& e) {
+          write_text_file(cases[k]->dir / "scene.error.txt", std::string(e.what()) + "\n");
+        }
+      }
     if (pictures) {
       try {
         render_recording(options.renderer, dir, cases, sketches);
@@ -193,7 +204,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
     }
   }
   summary.wall_s = options.timings ? seconds_since(start) : 0.0;
-  if (config.outputs.report) write_report(summary, config);
+  if (config.outputs.report) write_report(summary, config, &host);
   return summary;
 }
 
