@@ -117,7 +117,7 @@ vtkSmartPointer<vtkActor> deviation_actor(const DeviationLines& lines, double ma
 vtkSmartPointer<vtkProp> deviation_colour_bar(double max_m, int font_size, const SceneStyle& style) {
   auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(viridis_table(1000.0 * max_m, style.curve_colour));
-  bar->SetTitle("deviation from input (mm)");
+  bar->SetTitle("deviation (mm)");  // short: a longer title is clipped at the panel edge
   bar->SetNumberOfLabels(5);
   bar->SetLabelFormat("%.3g");
   bar->UnconstrainedFontSizeOn();
