@@ -2,6 +2,7 @@
 // recording through each stack (and sweep point) and write the results.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -13,6 +14,7 @@
 #include "sketchlab/lab/experiment_runner.hpp"
 #ifdef SKETCHLAB_HAVE_VIEWER
 #include "sketchlab/viewer/display.hpp"
+#include "sketchlab/viewer/export_gltf.hpp"
 #include "sketchlab/viewer/render_png.hpp"
 #endif
 
@@ -39,10 +41,25 @@ Renderer make_renderer() {
                         std::to_string(sketch->network.patches().size()) + " patches"});
       sketches.push_back(sketch);
     }
-    const int width = 640 * static_cast<int>(vp.size()), height = 640;
+    // Rows of at most three 720-pixel panels: readable at the report's full
+    // width; curves coloured by their deviation from the input stroke, with
+    // a colour bar and a scale bar.
+    const int n = static_cast<int>(vp.size()), columns = std::min(n, 3);
+    const int width = 720 * columns, height = 720 * ((n + columns - 1) / columns);
     const auto camera = viewer::fit_camera(sketches, viewer::ViewDirection::iso, 1.0);
-    viewer::render_png(vp, camera, width, height, png);
+    viewer::SceneStyle style;
+    style.colour_by_deviation = true;
+    style.show_scale_bar = true;
+    viewer::render_png(vp, camera, width, height, png, style, columns);
   };
+#else
+  return {};
+#endif
+}
+
+SceneExporter make_scene_exporter() {
+#ifdef SKETCHLAB_HAVE_VIEWER
+  return [](const Sketch& sketch) { return viewer::sketch_to_gltf(sketch); };
 #else
   return {};
 #endif
@@ -96,6 +113,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
 #endif
     if (config.outputs.pictures && !options.pictures_unavailable.empty())
       std::cerr << "warning: no pictures: " << options.pictures_unavailable << "\n";
+    options.scene_exporter = make_scene_exporter();
     const RunSummary summary = run_experiment(config, host, options);
     progress.finish();
     // Pictures that failed while drawing (noted in the report too).

@@ -19,6 +19,9 @@ packages=(
   libvtk9-dev libopenmpi-dev libopenxr-dev libxi-dev
   # headless rendering and viewer tests (xdotool drives the real window)
   xvfb xauth xdotool
+  # the report's 3D views tested in a real browser (tests/app/report_browser_test.cpp);
+  # the viewer script itself is committed built (lab/report_web/README.md)
+  chromium
   # shared compiler cache between build directories
   ccache
   # libFuzzer harnesses (fuzz/, scripts/fuzz.sh): clang with its runtimes

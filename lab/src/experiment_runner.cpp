@@ -133,6 +133,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
     summary.provenance.notes.push_back(
         "no pictures: " + (options.pictures_unavailable.empty() ? std::string("no renderer in this build")
                                                                 : options.pictures_unavailable));
+  const bool scenes = config.outputs.report && options.scene_exporter;
   std::vector<std::optional<Sketch>> final_sketches(summary.cases.size());
 
   std::mutex progress_mutex;
@@ -156,7 +157,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
         auto input = instantiate_input(c.variant.stack, host, c.recording);
         const ReplayResult r = replay(*input, stack);
         write_case_outputs(config.outputs, r, options.timings, c.dir);
-        if (pictures) final_sketches[i] = pictured(r.session.sketch());
+        if (pictures || scenes) final_sketches[i] = pictured(r.session.sketch());
         std::string header = case_provenance_comment(summary.provenance, c.variant.stack, c.recording, c.dir);
         for (const auto& [path, value] : c.variant.point) header += "# sweep: " + path + " = " + value + "\n";
         write_text_file(c.dir / "case.yaml", header + stack_to_yaml(c.variant.stack));
@@ -193,6 +194,16 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
     const fs::path dir = summary.run_dir / rec.stem();
     fs::create_directories(dir);
     if (config.outputs.mlp) write_meshlab_project(dir, cases);
+    // On this thread: the exporter's VTK objects are not thread-safe.
+    if (scenes)
+      for (std::size_t k = 0; k < cases.size(); ++k) {
+        if (!cases[k]->ok || !*sketches[k]) continue;
+        try {
+          write_text_file(cases[k]->dir / "scene.gltf", options.scene_exporter(**sketches[k]));
+        } catch (const std::exception& e) {
+          write_text_file(cases[k]->dir / "scene.error.txt", std::string(e.what()) + "\n");
+        }
+      }
     if (pictures) {
       try {
         render_recording(options.renderer, dir, cases, sketches);
@@ -204,7 +215,7 @@ RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host
     }
   }
   summary.wall_s = options.timings ? seconds_since(start) : 0.0;
-  if (config.outputs.report) write_report(summary, config);
+  if (config.outputs.report) write_report(summary, config, &host);
   write_text_file(summary.run_dir / "provenance.yaml", provenance_yaml(summary.provenance, summary.run_dir));
   return summary;
 }

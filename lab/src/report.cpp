@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <tuple>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -11,10 +13,19 @@
 
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/lab/provenance.hpp"
+#include "sketchlab/lab/distribution.hpp"
+#include "sketchlab/lab/metric_glossary.hpp"
+#include "sketchlab/lab/svg_plot.hpp"
+#include "sketchlab/plugin/plugin_host.hpp"
 
 namespace sketchlab {
+
+std::string report_web_bundle();  // lab/report_web/dist, compiled in (cmake/EmbedText.cmake)
+
 namespace fs = std::filesystem;
 namespace {
+
+const char* const report_web_script = "report_web/sketchlab_report.js";
 
 // Shown first in tables and plotted against sweep values, when present.
 const std::vector<std::string> headline = {
@@ -132,51 +143,231 @@ void write_json(const RunSummary& s) {
   write_text_file(s.run_dir / "metrics.json", root.dump(1) + "\n");
 }
 
-std::string recording_section(const RunSummary& s, const fs::path& recording) {
+
+// ----- HTML presentation -------------------------------------------------
+
+// Metric names present in `cases`, in glossary order (group rank, then name).
+std::vector<std::string> displayed_metrics(const std::vector<const CaseResult*>& cases) {
+  std::set<std::string> all;
+  for (const auto* c : cases)
+    if (c->ok)
+      for (const auto& [k, v] : c->metrics.values) all.insert(k);
+  std::vector<std::string> names(all.begin(), all.end());
+  std::stable_sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
+    const MetricInfo ia = metric_info(a), ib = metric_info(b);
+    // Group by hundreds of rank, then by group name (one per reference
+    // track), then by rank within the group.
+    return std::make_tuple(ia.rank / 100, std::cref(ia.group), ia.rank) <
+           std::make_tuple(ib.rank / 100, std::cref(ib.group), ib.rank);
+  });
+  return names;
+}
+
+std::string header_label(const MetricInfo& info) {
+  return html_escape(info.label) + (info.unit.empty() ? "" : " <span class=\"unit\">(" + html_escape(info.unit) + ")</span>");
+}
+
+// Rows are metrics grouped under a group row (a table that fits the page
+// whatever the number of metrics), columns are the stacks; `cell(metric,
+// column)` gives the cell's HTML.
+std::string metric_table(const std::vector<std::string>& names, const std::vector<std::string>& columns,
+                         const std::function<std::string(const std::string&, std::size_t)>& cell,
+                         const std::string& caption) {
+  std::ostringstream h;
+  h << "<table class=\"metrics\"><caption>" << caption << "</caption>\n<thead><tr><th>metric</th>";
+  for (const auto& c : columns) h << "<th>" << html_escape(c) << "</th>";
+  h << "</tr></thead>\n<tbody>\n";
+  std::string group;
+  for (const auto& n : names) {
+    const MetricInfo info = metric_info(n);
+    if (info.group != group) {
+      group = info.group;
+      h << "<tr class=\"group\"><th colspan=\"" << columns.size() + 1 << "\">" << html_escape(group) << "</th></tr>\n";
+    }
+    h << "<tr><th title=\"" << html_escape(n) << "\"><a href=\"#metric-" << html_escape(n) << "\">"
+      << header_label(info) << "</a></th>";
+    for (std::size_t i = 0; i < columns.size(); ++i) h << "<td>" << cell(n, i) << "</td>";
+    h << "</tr>\n";
+  }
+  h << "</tbody></table>\n";
+  return h.str();
+}
+
+std::string displayed(const std::string& metric, double stored) {
+  return format_displayed(stored * metric_info(metric).scale);
+}
+
+// Stacks in config order (variants of a sweep each count as a stack).
+std::vector<std::string> stack_names(const RunSummary& s) {
+  std::vector<std::string> names;
+  for (const auto& c : s.cases)
+    if (std::find(names.begin(), names.end(), c.variant.stack.name) == names.end())
+      names.push_back(c.variant.stack.name);
+  return names;
+}
+
+// Per stack, across recordings: median [first quartile, third quartile] of
+// each metric over the recordings where it is defined, n = that count.
+std::string summary_section(const RunSummary& s) {
+  const auto stacks = stack_names(s);
+  std::vector<const CaseResult*> all;
+  for (const auto& c : s.cases) all.push_back(&c);
+  const auto names = displayed_metrics(all);
+  if (names.empty()) return "";
+  std::set<std::string> recordings;
+  for (const auto& c : s.cases) recordings.insert(c.recording.stem().string());
+  const auto cell = [&](const std::string& metric, std::size_t column) -> std::string {
+    std::vector<double> v;
+    for (const auto& c : s.cases)
+      if (c.ok && c.variant.stack.name == stacks[column])
+        if (auto it = c.metrics.values.find(metric); it != c.metrics.values.end()) v.push_back(it->second);
+    if (v.empty()) return "";
+    const Distribution d = distribution(v);
+    if (v.size() == 1) return displayed(metric, d.median) + " <span class=\"n\">n=1</span>";
+    return displayed(metric, d.median) + " <span class=\"iqr\">[" + displayed(metric, d.p25) + ", " +
+           displayed(metric, d.p75) + "]</span> <span class=\"n\">n=" + std::to_string(v.size()) + "</span>";
+  };
+  std::ostringstream h;
+  h << "<section id=\"summary\"><h2>Summary across recordings</h2>\n"
+    << metric_table(names, stacks, cell,
+                    "Median [first, third quartile] over the " + std::to_string(recordings.size()) +
+                        " recording(s) of each stack; n = recordings where the metric applies and the case ran. "
+                        "Units in brackets; definitions in the <a href=\"#glossary\">glossary</a>.")
+    << "</section>\n";
+  return h.str();
+}
+
+// Empirical CDF of the time per corrected stroke (one sample per stroke,
+// not per event), one line per stack, over the given cases.
+std::string latency_plot(const std::vector<const CaseResult*>& cases, const std::string& title) {
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<double>> per_stack;
+  for (const auto* c : cases) {
+    if (!c->ok || c->stroke_latency_ms.empty()) continue;
+    if (!per_stack.count(c->variant.stack.name)) order.push_back(c->variant.stack.name);
+    auto& v = per_stack[c->variant.stack.name];
+    v.insert(v.end(), c->stroke_latency_ms.begin(), c->stroke_latency_ms.end());
+  }
+  std::vector<PlotSeries> series;
+  bool positive = true;
+  double lo = INFINITY, hi = 0;
+  for (const auto& name : order) {
+    const auto& v = per_stack[name];
+    for (double x : v) positive = positive && x > 0, lo = std::min(lo, x), hi = std::max(hi, x);
+    series.push_back({name + " (" + std::to_string(v.size()) + " strokes)", empirical_cdf(v)});
+  }
+  if (series.empty()) return "";
+  PlotOptions o;
+  o.title = title;
+  o.x_label = "time per corrected stroke (ms)";
+  o.y_label = "fraction of strokes";
+  o.steps = true;
+  o.markers = false;
+  o.log_x = positive && hi > 20 * lo;  // latencies span decades across stacks
+  return svg_plot(series, o);
+}
+
+std::string latency_section(const RunSummary& s) {
+  std::vector<const CaseResult*> all;
+  for (const auto& c : s.cases) all.push_back(&c);
+  const std::string plot = latency_plot(all, "Latency per stroke, all recordings");
+  if (plot.empty()) return "";
+  return "<section id=\"latency\"><h2>Latency</h2>\n<figure>" + plot +
+         "<figcaption>Empirical distribution of the time per corrected stroke (corrector and surfacer, "
+         "one sample per stroke), all recordings pooled: a curve further left is faster; where it "
+         "reaches 0.5 is the median.</figcaption></figure></section>\n";
+}
+
+// The legend of the side-by-side pictures (the viewer's SceneStyle).
+const char* picture_legend =
+    "<ul class=\"legend\"><li><span class=\"swatch\" style=\"background:#b8b8b8\"></span>raw stroke</li>"
+    "<li><span class=\"swatch\" style=\"background:#4d5466\"></span>scaffold curve</li>"
+    "<li><span class=\"swatch\" style=\"background:#0d0d14;height:4px\"></span>shape curve</li>"
+    "<li><span class=\"swatch\" style=\"background:#1a1a24\"></span>other curve</li>"
+    "<li><span class=\"swatch dot\" style=\"background:#d9541a\"></span>node</li>"
+    "<li><span class=\"swatch\" style=\"background:#5994e6;opacity:.5;height:10px\"></span>patch</li></ul>";
+
+std::string recording_section(const RunSummary& s, const fs::path& recording, const std::set<std::string>& scenes_shown) {
   std::vector<const CaseResult*> cases;
   for (const auto& c : s.cases)
     if (c.recording == recording) cases.push_back(&c);
   const std::string name = recording.stem().string();
   std::ostringstream h;
-  h << "<h2>" << html_escape(name) << "</h2>\n";
+  h << "<section class=\"recording\" id=\"rec-" << html_escape(name) << "\"><h2>" << html_escape(name) << "</h2>\n";
   if (fs::exists(s.run_dir / name / "side_by_side.png"))
-    h << "<img src=\"" << html_escape(name) << "/side_by_side.png\" alt=\"" << html_escape(name)
-      << " side by side\" style=\"max-width:100%\">\n";
+    h << "<figure class=\"wide\"><img src=\"" << html_escape(name) << "/side_by_side.png\" alt=\"" << html_escape(name)
+      << " side by side\"><figcaption>Final sketches of every stack from one camera. " << picture_legend
+      << "Curves are coloured by their deviation from the input stroke where the colour bar is shown; the "
+         "scale bar gives the length at the focal point.</figcaption></figure>\n";
+  else if (fs::exists(s.run_dir / name / "side_by_side.error.txt"))
+    h << "<p class=\"error\">No picture: " << html_escape(read_text_file(s.run_dir / name / "side_by_side.error.txt"))
+      << "</p>\n";
+  // The 3D views (report_web/): every stack's scene.gltf, linked cameras.
+  std::vector<std::pair<std::string, std::string>> scenes;  // (stack, file relative to the run folder)
+  for (const auto* c : cases)
+    if (c->ok)
+      if (const auto key = fs::relative(c->dir / "scene.gltf", s.run_dir).generic_string(); scenes_shown.count(key))
+        scenes.emplace_back(c->variant.stack.name, key);
+  if (!scenes.empty()) {
+    h << "<figure class=\"wide\"><div class=\"scene-row\" data-recording=\"" << html_escape(name) << "\">";
+    for (const auto& [stack, file] : scenes)
+      h << "<div class=\"scene\" data-scene=\"" << html_escape(file) << "\" data-title=\"" << html_escape(stack)
+        << "\"></div>";
+    h << "</div><figcaption>Interactive 3D (drag to orbit, wheel to zoom, right-drag to pan; the views "
+         "move together). Each view is the case's <code>scene.gltf</code>.</figcaption></figure>\n";
+  }
   if (fs::exists(s.run_dir / name / (name + ".mlp")))
     h << "<p>MeshLab project: <a href=\"" << html_escape(name + "/" + name + ".mlp") << "\">"
       << html_escape(name) << ".mlp</a></p>\n";
-  const auto names = metric_names(cases);
-  h << "<table><tr><th>stack</th>";
-  for (const auto& n : names) h << "<th>" << html_escape(n) << "</th>";
-  h << "</tr>\n";
-  for (const auto* c : cases) {
-    h << "<tr><td>" << html_escape(c->variant.stack.name) << "</td>";
-    if (!c->ok) {
-      h << "<td colspan=\"" << names.size() << "\" class=\"error\">failed: " << html_escape(c->error) << "</td>";
-    } else {
-      for (const auto& n : names) {
-        auto it = c->metrics.values.find(n);
-        h << "<td>" << (it == c->metrics.values.end() ? "" : number(it->second)) << "</td>";
-      }
-    }
-    h << "</tr>\n";
-  }
-  h << "</table>\n";
-  std::vector<PlotSeries> latency;
-  for (const auto* c : cases) {
-    if (!c->ok || c->stroke_latency_ms.empty()) continue;
-    PlotSeries series{c->variant.stack.name, {}};
-    for (std::size_t i = 0; i < c->stroke_latency_ms.size(); ++i)
-      series.points.emplace_back(double(i), c->stroke_latency_ms[i]);
-    latency.push_back(std::move(series));
-  }
-  if (!latency.empty()) h << svg_line_plot("latency per stroke: " + name, "stroke", "ms", latency);
+  std::vector<std::string> columns;
+  for (const auto* c : cases) columns.push_back(c->variant.stack.name);
+  const auto names = displayed_metrics(cases);
+  for (const auto* c : cases)
+    if (!c->ok)
+      h << "<p class=\"error\">" << html_escape(c->variant.stack.name) << " failed: " << html_escape(c->error) << "</p>\n";
+  if (!names.empty())
+    h << metric_table(names, columns,
+                      [&](const std::string& metric, std::size_t i) -> std::string {
+                        if (!cases[i]->ok) return "failed";
+                        auto it = cases[i]->metrics.values.find(metric);
+                        return it == cases[i]->metrics.values.end() ? "" : displayed(metric, it->second);
+                      },
+                      "Metrics of " + html_escape(name) + " per stack.");
+  const std::string plot = latency_plot(cases, "Latency per stroke: " + name);
+  if (!plot.empty()) h << "<figure>" << plot << "</figure>\n";
+  h << "</section>\n";
   return h.str();
+}
+
+// A sweep axis named as the plugin declares the parameter: "delta (m), the
+// cassie corrector's parameter", when the path is
+// stacks.<i>.<corrector|surfacer|input>.params.<name> and the plugin is known.
+std::string axis_label(const std::string& path, const ExperimentConfig& config, const PluginHost* host) {
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  if (parts.size() != 5 || parts[0] != "stacks" || parts[3] != "params") return path;
+  std::size_t index = 0;
+  const auto [end, ec] = std::from_chars(parts[1].data(), parts[1].data() + parts[1].size(), index);
+  if (ec != std::errc() || index >= config.stacks.size()) return path;
+  const StackConfig& stack = config.stacks[index];
+  const PluginChoice* choice = nullptr;
+  PluginKind kind = PluginKind::corrector;
+  if (parts[2] == "corrector") choice = &stack.corrector;
+  else if (parts[2] == "surfacer" && stack.surfacer) choice = &*stack.surfacer, kind = PluginKind::surfacer;
+  else if (parts[2] == "input" && stack.input) choice = &*stack.input, kind = PluginKind::input;
+  if (!choice) return path;
+  std::string label = parts[4];
+  if (host)
+    if (const LoadedPlugin* plugin = host->find(kind, choice->plugin))
+      for (const auto& spec : plugin->descriptor->params)
+        if (spec.name == parts[4] && !spec.unit.empty()) label += " (" + spec.unit + ")";
+  return label + ", " + choice->plugin + " " + parts[2] + " parameter";
 }
 
 // Metric against each numeric sweep axis, one series per base stack,
 // averaged over recordings.
-std::string sweep_section(const RunSummary& s, const ExperimentConfig& config) {
+std::string sweep_section(const RunSummary& s, const ExperimentConfig& config, const PluginHost* host) {
   std::ostringstream h;
   const auto paths = sweep_paths(config);
   for (const auto& path : paths) {
@@ -191,74 +382,112 @@ std::string sweep_section(const RunSummary& s, const ExperimentConfig& config) {
         a.first += it->second;
         ++a.second;
       }
+      const MetricInfo info = metric_info(metric);
       std::vector<PlotSeries> series;
       for (const auto& [stack, xs] : acc) {
         PlotSeries p{stack, {}};
-        for (const auto& [x, a] : xs) p.points.emplace_back(x, a.first / a.second);
+        for (const auto& [x, a] : xs) p.points.emplace_back(x, a.first / a.second * info.scale);
         if (p.points.size() > 1) series.push_back(std::move(p));
       }
-      if (!series.empty()) h << svg_line_plot(metric + " vs " + path, path, metric, series);
+      if (series.empty()) continue;
+      PlotOptions o;
+      const std::string x = axis_label(path, config, host);
+      o.title = info.group + ": " + info.label;
+      o.x_label = x;
+      o.y_label = info.label + (info.unit.empty() ? "" : " (" + info.unit + ")") + ", mean over recordings";
+      h << "<figure>" << svg_plot(series, o) << "</figure>\n";
     }
   }
-  if (h.tellp() > 0) return "<h2>Sweep</h2>\n" + h.str();
+  if (h.tellp() > 0) return "<section id=\"sweep\"><h2>Sweep</h2>\n" + h.str() + "</section>\n";
   return "";
 }
 
-}  // namespace
-
-std::string svg_line_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
-                          const std::vector<PlotSeries>& series) {
-  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf"};
-  const double W = 640, H = 300, L = 70, R = 160, T = 30, B = 45;
-  double x0 = INFINITY, x1 = -INFINITY, y0 = 0, y1 = -INFINITY;
-  for (const auto& s : series)
-    for (const auto& [x, y] : s.points) {
-      x0 = std::min(x0, x), x1 = std::max(x1, x);
-      y0 = std::min(y0, y), y1 = std::max(y1, y);
-    }
-  if (!(x1 > x0)) x1 = x0 + 1;
-  if (!(y1 > y0)) y1 = y0 + 1;
-  const auto px = [&](double x) { return L + (x - x0) / (x1 - x0) * (W - L - R); };
-  const auto py = [&](double y) { return H - B - (y - y0) / (y1 - y0) * (H - T - B); };
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-    << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
-    << "<text x=\"" << W / 2 << "\" y=\"16\" text-anchor=\"middle\" font-size=\"13\">" << html_escape(title) << "</text>\n"
-    << "<line x1=\"" << L << "\" y1=\"" << H - B << "\" x2=\"" << W - R << "\" y2=\"" << H - B << "\" stroke=\"black\"/>\n"
-    << "<line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << H - B << "\" stroke=\"black\"/>\n"
-    << "<text x=\"" << L << "\" y=\"" << H - B + 14 << "\" text-anchor=\"middle\">" << number(x0) << "</text>\n"
-    << "<text x=\"" << W - R << "\" y=\"" << H - B + 14 << "\" text-anchor=\"middle\">" << number(x1) << "</text>\n"
-    << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 8 << "\" text-anchor=\"middle\">" << html_escape(x_label) << "</text>\n"
-    << "<text x=\"" << L - 4 << "\" y=\"" << H - B << "\" text-anchor=\"end\">" << number(y0) << "</text>\n"
-    << "<text x=\"" << L - 4 << "\" y=\"" << T + 4 << "\" text-anchor=\"end\">" << number(y1) << "</text>\n"
-    << "<text x=\"14\" y=\"" << (T + H - B) / 2 << "\" transform=\"rotate(-90 14 " << (T + H - B) / 2
-    << ")\" text-anchor=\"middle\">" << html_escape(y_label) << "</text>\n";
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    const char* colour = colours[i % 7];
-    o << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.5\" points=\"";
-    for (const auto& [x, y] : series[i].points) o << number(px(x)) << "," << number(py(y)) << " ";
-    o << "\"/>\n<text x=\"" << W - R + 10 << "\" y=\"" << T + 14 * (i + 1) << "\" fill=\"" << colour << "\">"
-      << html_escape(series[i].name) << "</text>\n";
+std::string glossary_section(const RunSummary& s) {
+  std::vector<const CaseResult*> all;
+  for (const auto& c : s.cases) all.push_back(&c);
+  const auto names = displayed_metrics(all);
+  if (names.empty()) return "";
+  std::ostringstream h;
+  h << "<section id=\"glossary\"><h2>Glossary</h2>\n<table class=\"glossary\"><thead><tr><th>group</th>"
+       "<th>column</th><th>unit</th><th>name in metrics.csv</th><th>meaning</th></tr></thead><tbody>\n";
+  for (const auto& n : names) {
+    const MetricInfo info = metric_info(n);
+    h << "<tr id=\"metric-" << html_escape(n) << "\"><td>" << html_escape(info.group) << "</td><td>"
+      << html_escape(info.label) << "</td><td>" << (info.unit.empty() ? "count" : html_escape(info.unit))
+      << "</td><td><code>" << html_escape(n) << "</code></td><td>" << html_escape(info.description) << "</td></tr>\n";
   }
-  o << "</svg>\n";
-  return o.str();
+  h << "</tbody></table><p>metrics.csv and metrics.json hold the stored values: lengths in metres, "
+       "ratios in [0, 1], times in milliseconds.</p></section>\n";
+  return h.str();
 }
 
-void write_report(const RunSummary& s, const ExperimentConfig& config) {
+const char* report_css =
+    "body{font-family:system-ui,sans-serif;margin:1.5em auto;max-width:1400px;padding:0 1em;color:#111;line-height:1.4}"
+    "h1{margin-bottom:.2em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}"
+    "nav a{margin-right:1em}figure{margin:1em 0}figure.wide img{width:100%;height:auto;border:1px solid #ddd}"
+    "figcaption{font-size:14px;color:#333;margin-top:.3em}svg.plot{max-width:100%;height:auto}"
+    "table{border-collapse:collapse;font-size:14px;margin:1em 0}caption{text-align:left;font-size:13px;color:#444;"
+    "caption-side:bottom;padding-top:.3em}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right;"
+    "font-variant-numeric:tabular-nums;white-space:nowrap}thead th{background:#eef;position:sticky;top:0}"
+    "tbody th{text-align:left;font-weight:normal}tr.group th{background:#f4f4f4;font-weight:bold;text-align:left}"
+    "th a{color:inherit;text-decoration:none}.unit,.n{color:#666;font-size:12px}.iqr{color:#444}"
+    "table.glossary td{white-space:normal;text-align:left}.error{color:#b00}"
+    "ul.legend{list-style:none;padding:0;margin:.3em 0;display:flex;flex-wrap:wrap;gap:1.2em}"
+    ".swatch{display:inline-block;width:22px;height:3px;vertical-align:middle;margin-right:5px}"
+    ".swatch.dot{width:9px;height:9px;border-radius:50%}"
+    ".scene-row{display:flex;gap:4px;width:100%}.scene{flex:1;min-width:0;height:420px;border:1px solid #ddd;"
+    "position:relative}.scene .title{position:absolute;left:8px;top:6px;font-size:14px;pointer-events:none;z-index:1}"
+    "@media print{.scene-row{display:none}}";
+
+}  // namespace
+
+void write_report(const RunSummary& s, const ExperimentConfig& config, const PluginHost* host) {
   write_csv(s, config);
   write_json(s);
+  // The 3D views: each case's scene.gltf wrapped in a classic script (a page
+  // opened from file:// may not fetch() it), and the viewer bundle.
+  std::vector<std::string> scene_scripts;
+  std::set<std::string> scene_keys;
+  for (const auto& c : s.cases) {
+    if (!c.ok || !fs::exists(c.dir / "scene.gltf")) continue;
+    const std::string key = fs::relative(c.dir / "scene.gltf", s.run_dir).generic_string();
+    nlohmann::json gltf;
+    try {
+      gltf = nlohmann::json::parse(read_text_file(c.dir / "scene.gltf"));
+    } catch (const nlohmann::json::exception&) {
+      continue;  // not glTF: the case shows no 3D view, its file stays for inspection
+    }
+    write_text_file(c.dir / "scene.gltf.js", "(window.sketchlabScenes = window.sketchlabScenes || {})[" +
+                                                 nlohmann::json(key).dump() + "] = " + gltf.dump() + ";\n");
+    scene_scripts.push_back(key + ".js");
+    scene_keys.insert(key);
+  }
+  const bool scenes = !scene_scripts.empty();
+  if (scenes) {
+    fs::create_directories(s.run_dir / "report_web");
+    write_text_file(s.run_dir / report_web_script, report_web_bundle());
+  }
   std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << html_escape(config.name)
-    << " — sketchlab report</title>\n<style>body{font-family:sans-serif;margin:2em}"
-       "table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:3px 6px;"
-       "text-align:right}th{background:#f0f0f0}td:first-child{text-align:left}.error{color:#b00}</style>"
-       "</head><body>\n"
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(config.name)
+    << " — sketchlab report</title>\n<style>" << report_css << "</style></head><body>\n"
     << "<h1>" << html_escape(config.name) << "</h1>\n<p>" << s.cases.size() << " cases, " << s.failed()
     << " failed, " << number(s.wall_s) << " s. Configuration: <a href=\"config.yaml\">config.yaml</a>; "
     << "metrics: <a href=\"metrics.csv\">metrics.csv</a>, <a href=\"metrics.json\">metrics.json</a>.</p>\n";
-  for (const auto& rec : config.recordings) h << recording_section(s, rec);
-  h << sweep_section(s, config);
+  const std::string summary = summary_section(s), latency = latency_section(s), sweep = sweep_section(s, config, host),
+                    glossary = glossary_section(s);
+  h << "<nav>";
+  if (!summary.empty()) h << "<a href=\"#summary\">summary</a>";
+  if (!latency.empty()) h << "<a href=\"#latency\">latency</a>";
+  for (const auto& rec : config.recordings)
+    h << "<a href=\"#rec-" << html_escape(rec.stem().string()) << "\">" << html_escape(rec.stem().string()) << "</a>";
+  if (!sweep.empty()) h << "<a href=\"#sweep\">sweep</a>";
+  if (!glossary.empty()) h << "<a href=\"#glossary\">glossary</a>";
+  h << "</nav>\n" << summary << latency;
   h << provenance_html(s.provenance, s.run_dir);  // provenance.hpp
+  for (const auto& rec : config.recordings) h << recording_section(s, rec, scene_keys);
+  h << sweep << glossary;
+  for (const auto& src : scene_scripts) h << "<script src=\"" << html_escape(src) << "\"></script>\n";
+  if (scenes) h << "<script src=\"" << report_web_script << "\"></script>\n";
   h << "</body></html>\n";
   write_text_file(s.run_dir / "report.html", h.str());
 }

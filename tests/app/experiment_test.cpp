@@ -75,15 +75,23 @@ TEST_CASE("a two-stack experiment writes every output", "[app][experiment]") {
   }
   CHECK(layers == 4);  // raw strokes and curves of both stacks (no nodes, no patches)
 
-  // The report references only files that exist.
+  // The report references only files that exist, and links only to
+  // anchors it has.
   const std::string html = read_text_file(run / "report.html");
-  const std::regex ref_re("(?:href|src)=\"([^\"]+)\"");
+  const std::regex ref_re("(?:href|src)=\"([^\"#][^\"]*)\"");
   int refs = 0;
   for (std::sregex_iterator it(html.begin(), html.end(), ref_re), end; it != end; ++it, ++refs) {
     INFO((*it)[1].str());
     CHECK(fs::exists(run / (*it)[1].str()));
   }
   CHECK(refs >= 4);
+  const std::regex anchor_re("href=\"#([^\"]+)\"");
+  int anchors = 0;
+  for (std::sregex_iterator it(html.begin(), html.end(), anchor_re), end; it != end; ++it, ++anchors) {
+    INFO((*it)[1].str());
+    CHECK_THAT(html, Catch::Contains("id=\"" + (*it)[1].str() + "\""));
+  }
+  CHECK(anchors > 10);  // contents, and each metric to its glossary entry
   CHECK_THAT(html, Catch::Contains("<svg"));
 
   const auto metrics = nlohmann::json::parse(read_text_file(run / "metrics.json"));

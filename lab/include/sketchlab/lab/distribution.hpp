@@ -8,7 +8,7 @@ namespace sketchlab {
 
 struct Distribution {
   std::size_t count = 0;
-  double median = 0.0, p90 = 0.0, p95 = 0.0, max = 0.0;
+  double min = 0.0, p25 = 0.0, median = 0.0, p75 = 0.0, p90 = 0.0, p95 = 0.0, max = 0.0;
 };
 
 // Nearest-rank percentiles; zeros for an empty input.

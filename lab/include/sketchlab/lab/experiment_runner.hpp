@@ -18,6 +18,9 @@
 //   <recording>/side_by_side.png  the cases' final sketches side by side (when a
 //                                 renderer is given; drawn from memory, so
 //                                 also without sketch.json)
+//   <recording>/<stack>/scene.gltf the case's final sketch as glTF 2.0 (when a
+//                                 scene exporter is given and the report is on;
+//                                 the report's 3D views show it)
 //   metrics.csv, metrics.json, report.html
 #include <filesystem>
 #include <functional>
@@ -52,6 +55,10 @@ struct Progress {
 using Renderer = std::function<void(const std::filesystem::path& png,
                                     const std::vector<std::pair<std::string, const Sketch*>>& panels)>;
 
+// A sketch as a glTF 2.0 document (JSON, buffers inline), for the report's
+// 3D views; throws std::exception on failure (the case keeps its other files).
+using SceneExporter = std::function<std::string(const Sketch& sketch)>;
+
 struct RunOptions {
   int jobs = 0;         // worker threads; 0 = hardware concurrency
   bool timings = true;  // false: latencies written as 0 (byte-identical reruns)
@@ -61,6 +68,7 @@ struct RunOptions {
   // so: with outputs.pictures set, it becomes a note of the run (terminal,
   // report, provenance.yaml) and the renderer is not called.
   std::string pictures_unavailable;
+  SceneExporter scene_exporter;  // used when outputs.report is set; may be empty
 };
 
 struct RunSummary {

@@ -23,12 +23,15 @@ struct Panel {
   std::string figures;
 };
 
-// Renders the panels into one width x height picture (panel i occupies
-// columns [i*width/n, (i+1)*width/n)) and writes it as RGB PNG.
-// Throws std::invalid_argument for no panels or a size below 16 pixels per
-// panel, std::runtime_error when there is no usable X display or the file
-// cannot be written.
+// Renders the panels into one width x height picture and writes it as RGB
+// PNG: in one row (columns 0: panel i occupies columns [i*width/n,
+// (i+1)*width/n)), or in rows of `columns` panels, filled from the top left.
+// The style may colour curves by deviation (with a colour bar in the last
+// panel) and add a scale bar per panel (scene_style.hpp).
+// Throws std::invalid_argument for no panels, negative columns or a size
+// below 16 pixels per panel, std::runtime_error when there is no usable X
+// display or the file cannot be written.
 void render_png(const std::vector<Panel>& panels, const Camera& camera, int width, int height,
-                const std::filesystem::path& png, const SceneStyle& style = {});
+                const std::filesystem::path& png, const SceneStyle& style = {}, int columns = 0);
 
 }  // namespace sketchlab::viewer

@@ -46,6 +46,15 @@ struct SceneStyle {
   // Thin line between side-by-side panels.
   Rgb separator_colour{0.80, 0.80, 0.80};
 
+  // Offscreen pictures (render_png) only. Colour curves by their distance
+  // to their input stroke (viridis, with a colour bar in mm) instead of by
+  // layer; the scale's top is deviation_max_m, or when 0 the 95th
+  // percentile over every panel's curves (one scale for the whole picture).
+  bool colour_by_deviation = false;
+  double deviation_max_m = 0.0;
+  // A bar of round length (1, 2, 5 × 10^k m) at the focal distance, per panel.
+  bool show_scale_bar = false;
+
   // Antialiasing samples (0 turns multisampling off: exact, reproducible
   // pixels, which the tests use).
   int multisamples = 8;
