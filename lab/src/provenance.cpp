@@ -1,4 +1,5 @@
 #include "sketchlab/lab/provenance.hpp"
+#include "html_escape.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -33,19 +34,6 @@ std::vector<std::pair<PluginKind, std::string>> choices_of(const StackConfig& st
   out.emplace_back(PluginKind::input, stack.input ? stack.input->plugin : std::string(default_input_plugin));
   out.emplace_back(PluginKind::corrector, stack.corrector.plugin);
   if (stack.surfacer) out.emplace_back(PluginKind::surfacer, stack.surfacer->plugin);
-  return out;
-}
-
-// Only what HTML text needs escaped (the report's own escaping lives with
-// the report; this section stays separable from it).
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
   return out;
 }
 
@@ -144,7 +132,7 @@ std::string experiment_yaml_relative_to(const ExperimentConfig& config, const fs
 std::string provenance_html(const RunProvenance& run, const fs::path& run_dir) {
   std::string h = "<h2>Provenance</h2>\n<table>\n";
   const auto row = [&](const std::string& k, const std::string& v) {
-    h += "<tr><th style=\"text-align:left\">" + escape(k) + "</th><td><code>" + escape(v) + "</code></td></tr>\n";
+    h += "<tr><th style=\"text-align:left\">" + html_escape(k) + "</th><td><code>" + html_escape(v) + "</code></td></tr>\n";
   };
   row("sketchlab", run.build.version);
   row("git commit", run.build.git_commit);
@@ -158,7 +146,7 @@ std::string provenance_html(const RunProvenance& run, const fs::path& run_dir) {
   for (const auto& p : run.plugins) row(p.kind, p.name + " " + p.version + "  (" + p.file.string() + ")");
   h += "</table>\n<p>Every parameter of every case, defaults included: <code>&lt;recording&gt;/&lt;stack&gt;/case.yaml</code>; "
        "the whole experiment: <code>config.yaml</code>; all of the above: <code>provenance.yaml</code>.</p>\n";
-  for (const auto& n : run.notes) h += "<p><strong>Note:</strong> " + escape(n) + "</p>\n";
+  for (const auto& n : run.notes) h += "<p><strong>Note:</strong> " + html_escape(n) + "</p>\n";
   return h;
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "sketchlab/io/text_file.hpp"
+#include "html_escape.hpp"
 #include "sketchlab/lab/provenance.hpp"
 #include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/lab/metric_glossary.hpp"
@@ -33,18 +34,6 @@ const std::vector<std::string> headline = {
     "input_deviation_mean_m", "ref_cassie_endpoint_mean_m", "ref_cassie_snap_agreement",
     "gt_distance_mean_m", "gt_distance_mean_aligned_eye_scale_m", "gt_parallel_recall",
     "gt_perpendicular_recall", "gt_coincident_point_recall"};
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
 
 std::string number(double v) {
   std::ostringstream s;

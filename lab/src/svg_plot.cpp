@@ -1,4 +1,5 @@
 #include "sketchlab/lab/svg_plot.hpp"
+#include "html_escape.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,18 +9,6 @@
 
 namespace sketchlab {
 namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
 
 std::string coord(double v) {
   std::ostringstream s;
@@ -119,9 +108,9 @@ std::string svg_plot(const std::vector<PlotSeries>& input, const PlotOptions& o)
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H << "\" width=\"" << W
     << "\" height=\"" << H << "\" class=\"plot\" font-family=\"sans-serif\" font-size=\"12\">\n"
-    << "<title>" << escape(o.title) << "</title>\n"
+    << "<title>" << html_escape(o.title) << "</title>\n"
     << "<text x=\"" << (L + W - R) / 2 << "\" y=\"18\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">"
-    << escape(o.title) << "</text>\n";
+    << html_escape(o.title) << "</text>\n";
   for (double t : xt) {
     const double x = pxt(t);
     s << "<line x1=\"" << coord(x) << "\" y1=\"" << T << "\" x2=\"" << coord(x) << "\" y2=\"" << H - B
@@ -136,10 +125,10 @@ std::string svg_plot(const std::vector<PlotSeries>& input, const PlotOptions& o)
   }
   s << "<rect x=\"" << L << "\" y=\"" << T << "\" width=\"" << W - L - R << "\" height=\"" << H - T - B
     << "\" fill=\"none\" stroke=\"#333\"/>\n"
-    << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\">" << escape(o.x_label)
+    << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\">" << html_escape(o.x_label)
     << (o.log_x ? " (log scale)" : "") << "</text>\n"
     << "<text x=\"16\" y=\"" << (T + H - B) / 2 << "\" transform=\"rotate(-90 16 " << (T + H - B) / 2
-    << ")\" text-anchor=\"middle\">" << escape(o.y_label) << "</text>\n";
+    << ")\" text-anchor=\"middle\">" << html_escape(o.y_label) << "</text>\n";
   for (std::size_t i = 0; i < series.size(); ++i) {
     const char* colour = colours[i % 7];
     const auto& pts = series[i].points;
@@ -155,7 +144,7 @@ std::string svg_plot(const std::vector<PlotSeries>& input, const PlotOptions& o)
     const double ly = T + 8 + 18 * double(i);
     s << "<line x1=\"" << W - R + 12 << "\" y1=\"" << ly << "\" x2=\"" << W - R + 32 << "\" y2=\"" << ly
       << "\" stroke=\"" << colour << "\" stroke-width=\"1.8\"/>" << marker(int(i), W - R + 22, ly, colour)
-      << "<text x=\"" << W - R + 38 << "\" y=\"" << ly + 4 << "\">" << escape(series[i].name) << "</text></g>\n";
+      << "<text x=\"" << W - R + 38 << "\" y=\"" << ly + 4 << "\">" << html_escape(series[i].name) << "</text></g>\n";
   }
   s << "</svg>\n";
   return s.str();
