@@ -1,25 +1,16 @@
 #include "sketchlab/lab/provenance.hpp"
 #include "html_escape.hpp"
+#include "sketchlab/lab/utc_timestamp.hpp"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <ctime>
 #include <set>
 #include <tuple>
 
 namespace sketchlab {
 namespace fs = std::filesystem;
 namespace {
-
-std::string iso_utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 InputProvenance input(const fs::path& file) { return {fs::absolute(file), hash_file(file)}; }
 
@@ -43,7 +34,7 @@ RunProvenance collect_provenance(const ExperimentConfig& config, const std::vect
                                  const PluginHost& host) {
   RunProvenance run;
   run.build = build_info();
-  run.started_utc = iso_utc_now();
+  run.started_utc = utc_iso8601();
   if (!config.file.empty()) run.experiment = input(config.file);
   for (const auto& r : config.recordings) run.recordings.push_back(input(r));
   std::set<std::pair<std::string, std::string>> seen;
