@@ -62,7 +62,7 @@ std::size_t record(const std::string& input_name, const std::vector<std::string>
   const StopSignals signals;
   std::optional<std::chrono::steady_clock::time_point> stop_by;
   bool live = false;
-  while (!input->finished()) {
+  for (;;) {
     if (StopSignals::stop_requested() && !stop_by) {
       std::cerr << "sketchlab record: stopping (signal " << StopSignals::received() << ")\n";
       input->request_stop();

@@ -33,6 +33,7 @@
 #include <iostream>
 #include <random>
 
+#include "controller_state.hpp"
 #include "correction_worker.hpp"
 #include "eye_renderer.hpp"
 #include "sketchlab/config/config.hpp"
@@ -221,7 +222,7 @@ int main(int argc, char** argv) {
                 swapped.push_back(static_cast<double>(scene.chunks_swapped()));
               }
             }
-            scene.update(input, f, settings.dominant, seconds);
+            scene.update(openxr::controller_state(input, f, settings), seconds);
           },
           [&](int, const vr::EyeView& view, std::uint32_t texture) {
             eyes->render(view.position, view.orientation, view.fov, texture);

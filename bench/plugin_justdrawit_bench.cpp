@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <string>
 
 #include "jdi_params.hpp"
 #include "justdrawit_corrector.hpp"
@@ -83,13 +84,14 @@ double run(int curves) {
   const Stroke s = pixel_stroke(id, v, px);
   const int reps = 51;
   std::vector<double> times;
-  double decision = -1, analysed = 0;
+  std::string decision = "none";
+  double analysed = 0;
   for (int r = 0; r < reps; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     const Correction c = justdrawit_correct(s, sketch, p);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!c.error.empty()) return -1;
-    decision = c.stats.extra.at("decision");
+    decision = c.stats.outcomes.at("decision");
     analysed = c.stats.extra.at("curves_analysed");
     times.push_back(ms);
   }
@@ -98,8 +100,8 @@ double run(int curves) {
   for (double t : times) total += t;
   std::cout << "justdrawit_stroke_latency_min_" << curves << "_curves " << times.front() << " ms\n";
   std::cout << "justdrawit_stroke_latency_p50_" << curves << "_curves " << times[times.size() / 2] << " ms\n";
-  // 3 = extend (the stroke continues the middle curve).
-  std::cout << "justdrawit_decision_" << curves << "_curves " << decision << " code\n";
+  // extend: the stroke continues the middle curve.
+  std::cout << "justdrawit_decision_" << curves << "_curves " << decision << " (decision)\n";
   std::cout << "justdrawit_curves_analysed_" << curves << "_curves " << analysed << " curves\n";
   return total / reps;
 }

@@ -67,7 +67,8 @@ void bind_correctors(py::module_& m) {
       .def(py::init<>())
       .def_readwrite("iterations", &CorrectionStats::iterations)
       .def_readwrite("subsets_tried", &CorrectionStats::subsets_tried)
-      .def_readwrite("extra", &CorrectionStats::extra);
+      .def_readwrite("extra", &CorrectionStats::extra)
+      .def_readwrite("outcomes", &CorrectionStats::outcomes);
   py::class_<Correction>(m, "Correction", "What a corrector returns for one stroke")
       .def(py::init<>())
       .def(py::init([](Edit edit, std::vector<Constraint> constraints, CorrectionStats stats, std::string error) {

@@ -60,6 +60,8 @@ std::string check_descriptor(const PluginDescriptor& d, const FileName& expected
     return "descriptor has no factory for its kind (" + std::string(to_string(d.kind)) + ")";
   }
   if (d.make_pointer_input && d.kind != PluginKind::input) return "a pointer input factory on a non-input plugin";
+  if (d.make_controller_input && d.kind != PluginKind::input)
+    return "a controller input factory on a non-input plugin";
   if (!d.recording_param.empty()) {
     const auto spec = std::find_if(d.params.begin(), d.params.end(),
                                    [&](const ParamSpec& s) { return s.name == d.recording_param; });
@@ -330,24 +332,52 @@ std::shared_ptr<Input> PluginHost::make_input(const std::string& name,
   return make_object<Input>(*this, PluginKind::input, name, params, &PluginDescriptor::make_input);
 }
 
-std::vector<std::string> PluginHost::pointer_input_names() const {
+namespace {
+
+// The loaded input plugins whose descriptors set `factory`, in name order.
+template <class T>
+std::vector<std::string> input_names_with(const std::vector<LoadedPlugin>& plugins,
+                                          Factory<T> PluginDescriptor::*factory) {
   std::vector<std::string> names;
-  for (const auto& p : plugins_)
-    if (p.descriptor->kind == PluginKind::input && p.descriptor->make_pointer_input)
-      names.push_back(p.descriptor->name);
+  for (const auto& p : plugins)
+    if (p.descriptor->kind == PluginKind::input && p.descriptor->*factory) names.push_back(p.descriptor->name);
   std::sort(names.begin(), names.end());
   return names;
 }
 
-std::shared_ptr<PointerInput> PluginHost::make_pointer_input(
-    const std::string& name, const std::map<std::string, ParamValue>& params) const {
-  if (const LoadedPlugin* plugin = find(PluginKind::input, name); plugin && !plugin->descriptor->make_pointer_input) {
+// An input of a typed kind (`what`: "pointer", "controller"); refuses, naming
+// the plugins that make one, an input plugin that does not.
+template <class T>
+std::shared_ptr<T> make_typed_input(const PluginHost& host, const std::string& name,
+                                    const std::map<std::string, ParamValue>& params,
+                                    Factory<T> PluginDescriptor::*factory, const std::string& what) {
+  if (const LoadedPlugin* plugin = host.find(PluginKind::input, name); plugin && !(plugin->descriptor->*factory)) {
     std::string known;
-    for (const auto& n : pointer_input_names()) known += (known.empty() ? "" : ", ") + n;
-    throw PluginError("input '" + name + "' is not a pointer input; pointer inputs: " +
+    for (const auto& n : input_names_with(host.plugins(), factory)) known += (known.empty() ? "" : ", ") + n;
+    throw PluginError("input '" + name + "' is not a " + what + " input; " + what + " inputs: " +
                       (known.empty() ? std::string("none loaded") : known));
   }
-  return make_object<PointerInput>(*this, PluginKind::input, name, params, &PluginDescriptor::make_pointer_input);
+  return make_object<T>(host, PluginKind::input, name, params, factory);
+}
+
+}  // namespace
+
+std::vector<std::string> PluginHost::pointer_input_names() const {
+  return input_names_with(plugins_, &PluginDescriptor::make_pointer_input);
+}
+
+std::shared_ptr<PointerInput> PluginHost::make_pointer_input(
+    const std::string& name, const std::map<std::string, ParamValue>& params) const {
+  return make_typed_input(*this, name, params, &PluginDescriptor::make_pointer_input, "pointer");
+}
+
+std::vector<std::string> PluginHost::controller_input_names() const {
+  return input_names_with(plugins_, &PluginDescriptor::make_controller_input);
+}
+
+std::shared_ptr<ControllerInput> PluginHost::make_controller_input(
+    const std::string& name, const std::map<std::string, ParamValue>& params) const {
+  return make_typed_input(*this, name, params, &PluginDescriptor::make_controller_input, "controller");
 }
 
 }  // namespace sketchlab

@@ -24,6 +24,13 @@ const char* to_string(Decision d) {
   return "?";
 }
 
+std::optional<Decision> decision_from_string(std::string_view name) {
+  for (Decision d : {Decision::new_curve, Decision::new_closed_curve, Decision::oversketch, Decision::extend,
+                     Decision::partial_oversketch, Decision::extend_close, Decision::combine})
+    if (name == to_string(d)) return d;
+  return std::nullopt;
+}
+
 int choose(const std::vector<Candidate>& c, CurveId last_edited) {
   auto better = [&](int a, int b) {
     if (b < 0) return true;

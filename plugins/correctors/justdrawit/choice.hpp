@@ -1,6 +1,8 @@
 #pragma once
 // Choosing what to do with the stroke (§4.3): scores and the exceptions.
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stroke_curve_analysis.hpp"
@@ -20,6 +22,8 @@ inline double final_score(double q_d, double q_m) { return 0.25 * q_d + 0.75 * q
 enum class Decision { new_curve, new_closed_curve, oversketch, extend, partial_oversketch,
                       extend_close, combine };
 const char* to_string(Decision d);
+// The decision `to_string` names; nullopt for any other text.
+std::optional<Decision> decision_from_string(std::string_view name);
 
 struct Candidate {
   Decision decision = Decision::new_curve;

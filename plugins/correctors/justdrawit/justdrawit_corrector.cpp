@@ -58,7 +58,7 @@ Outcome process(const Points2& s2, const Stroke& stroke, const Sketch& sketch, c
     if (i == chosen || rank >= 3) continue;
     ++rank;
     const std::string k = "runner_up_" + std::to_string(rank) + "_";
-    o.stats.extra[k + "decision"] = static_cast<double>(cands[i].decision);
+    o.stats.outcomes[k + "decision"] = to_string(cands[i].decision);
     o.stats.extra[k + "score"] = cands[i].q;
     o.stats.extra[k + "curve"] = static_cast<double>(cands[i].curve);
   }
@@ -104,7 +104,7 @@ Outcome process(const Points2& s2, const Stroke& stroke, const Sketch& sketch, c
       close_new_curve(built, c, cum, ctx);
     }
   }
-  o.stats.extra["decision"] = static_cast<double>(decision);
+  o.stats.outcomes["decision"] = to_string(decision);
   o.stats.extra["score"] = score;
   if (item_a) o.stats.extra["curve"] = static_cast<double>(item_a->id);
 

@@ -125,7 +125,7 @@ Correction correct_scaffold_line(const Vec3& a, const Vec3& b, StrokeId stroke,
 
   out.constraints = describe_terms(terms, result, stroke, sketch.workspace);
   out.stats.iterations = result.iterations;
-  out.stats.extra["mode"] = mode_scaffold_line;
+  out.stats.outcomes["mode"] = mode_scaffold_line;
   out.stats.extra["candidates"] = static_cast<double>(terms.size());
   out.stats.extra["enforced"] =
       static_cast<double>(std::count(result.enforced.begin(), result.enforced.end(), true));
@@ -140,7 +140,7 @@ Correction correct_tick(const std::vector<Vec3>& points, StrokeId stroke, const 
                         const ScaffoldParams& params, double scale) {
   const auto start = std::chrono::steady_clock::now();
   Correction out;
-  out.stats.extra["mode"] = mode_tick;
+  out.stats.outcomes["mode"] = mode_tick;
   auto finish = [&] {
     out.stats.extra["time_ms"] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

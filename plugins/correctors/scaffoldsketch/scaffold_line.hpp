@@ -11,9 +11,12 @@
 
 namespace sketchlab::scaffoldsketch {
 
-// stats.extra["mode"] values.
-inline constexpr double mode_scaffold_line = 0, mode_tick = 1, mode_shape_curve = 2,
-                        mode_shape_line = 3, mode_shape_fallback = 4;
+// stats.outcomes["mode"]: what the stroke became.
+inline constexpr const char* mode_scaffold_line = "scaffold_line";
+inline constexpr const char* mode_tick = "tick";
+inline constexpr const char* mode_shape_curve = "shape_curve";
+inline constexpr const char* mode_shape_line = "shape_line";
+inline constexpr const char* mode_shape_fallback = "shape_fallback";
 
 // The new scaffold line from a to b (the press and release points, metres),
 // drawn at zoom `scale`: candidates (eq. 1–5), IRLS (eq. 6–7), a line curve

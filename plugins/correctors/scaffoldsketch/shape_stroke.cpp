@@ -56,8 +56,8 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
                                 const PreprocessParams& fallback) {
   const auto start = std::chrono::steady_clock::now();
   Correction out;
-  auto finish = [&](double mode) {
-    out.stats.extra["mode"] = mode;
+  auto finish = [&](const char* mode) {
+    out.stats.outcomes["mode"] = mode;
     out.stats.extra["time_ms"] =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
             .count();
@@ -91,7 +91,7 @@ Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,
   auto parameter = [&](std::size_t j) {
     return ends_only ? (j + 1 == m ? 1.0 : 0.0) : static_cast<double>(j);
   };
-  double mode = mode_shape_curve;
+  const char* mode = mode_shape_curve;
   if (straight) {
     shape = ends_only ? make_line(keys.points.front(), keys.points.back()) : polyline_curve(keys.points);
     mode = mode_shape_line;

@@ -18,7 +18,7 @@ std::vector<Vec3> resample_every(const std::vector<Vec3>& points, double spacing
 // (§4.2.1); a PCA-straight stroke (§4.2.2) becomes the exact line between the
 // first and last keypoints; otherwise the MVC piecewise Bézier (eq. 8–9).
 // With fewer than 2 keypoints the kernel's freehand fit (`fallback`) is used
-// (stats.extra["mode"] = mode_shape_fallback). Nodes join the curve to the
+// (stats.outcomes["mode"] = mode_shape_fallback). Nodes join the curve to the
 // scaffold lines at each keypoint. Constraints: a coincident_point per
 // keypoint, a tangent per scaffold-snapped tangent, straight for lines.
 Correction correct_shape_stroke(const Stroke& stroke, const Sketch& sketch,

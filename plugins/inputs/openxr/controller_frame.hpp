@@ -4,14 +4,12 @@
 #include <array>
 
 #include "input_settings.hpp"
+#include "sketchlab/plugin/controller_input.hpp"
 #include "sketchlab/types.hpp"
 
 namespace sketchlab::openxr {
 
-struct RigidPose {
-  Vec3 position = Vec3::Zero();
-  Quat orientation = Quat::Identity();
-};
+using RigidPose = Pose;
 
 struct HandFrame {
   bool tracked = false;

@@ -19,28 +19,16 @@
 
 namespace sketchlab::openxr {
 
-struct Placement {
-  Quat rotation = Quat::Identity();
-  Vec3 translation = Vec3::Zero();
-  double scale = 1.0;
-  Vec3 to_stage(const Vec3& w) const { return scale * (rotation * w) + translation; }
-  Vec3 to_workspace(const Vec3& x) const { return rotation.conjugate() * (x - translation) / scale; }
-};
+using Placement = StagePlacement;
 
 // What the draw trigger does (set from the hand menu): draw strokes, add a
 // patch at the tip, or delete the curve nearest the tip (CASSIE's
 // delete-nearest, radius delete_radius / s).
-enum class Tool { draw, patch, erase };
+using Tool = ControllerTool;
 
 // What the hand menu sets that is view state only (never recorded: every
 // stack sees every event, the viewer picks what to show).
-struct MenuView {
-  std::size_t stack = 0;     // index of the stack shown
-  bool compare = false;      // the next stack's curves overlaid on the shown one's
-  bool raw_strokes = true;   // raw strokes drawn faintly under the curves
-  bool rejected = false;     // constraint candidates the corrector rejected flashed too
-  bool operator==(const MenuView&) const = default;
-};
+using MenuView = ControllerView;
 
 class GestureInterpreter {
  public:

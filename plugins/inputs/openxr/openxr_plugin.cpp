@@ -1,10 +1,12 @@
 // The openxr input plugin: controllers of an OpenXR headset as session
 // events (gesture_interpreter.hpp). On its own it opens a headless OpenXR
-// session (XR_MND_headless); `sketchlab vr` reads the same actions inside
-// its rendering session instead.
+// session (XR_MND_headless); `sketchlab vr` gets a ControllerInput
+// (hosted_input.hpp) that reads the same actions inside its rendering
+// session instead.
 #include <deque>
 
 #include "headless_session.hpp"
+#include "hosted_input.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 
 namespace {
@@ -31,7 +33,6 @@ class OpenXrInput : public Input {
     pending_.pop_front();
     return e;
   }
-  bool finished() const override { return pending_.empty() && session_.ended(); }
   void request_stop() override { session_.request_exit(); }
 
  private:
@@ -41,7 +42,7 @@ class OpenXrInput : public Input {
 };
 
 PluginDescriptor describe() {
-  return input_descriptor<OpenXrInput>(
+  return controller_input_descriptor<OpenXrInput, openxr::HostedInput>(
       "openxr", "1.0",
       "OpenXR controllers: draw with the trigger (pressure), grab to move, two-hand zoom, commands on buttons",
       openxr::input_param_specs());

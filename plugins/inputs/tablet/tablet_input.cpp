@@ -24,7 +24,7 @@ RecordingHeader TabletInput::header() const {
 }
 
 NextEvent TabletInput::next() {
-  if (queue_.empty()) return finished() ? NextEvent::ended() : NextEvent::not_ready();
+  if (queue_.empty()) return closed_ ? NextEvent::ended() : NextEvent::not_ready();
   Event e = std::move(queue_.front());
   queue_.pop_front();
   return e;

@@ -22,7 +22,6 @@ class TabletInput : public PointerInput {
 
   RecordingHeader header() const override;
   NextEvent next() override;
-  bool finished() const override { return closed_ && queue_.empty(); }
 
   void pen_down(const PointerSample& sample, const PointerContext& context) override;
   void pen_move(const PointerSample& sample) override;

@@ -94,6 +94,7 @@ TEST_CASE("each check of a plugin's header and descriptor refuses it with its ow
       {"no_descriptor", "header has no descriptor"},
       {"no_factory", "descriptor has no factory for its kind (corrector)"},
       {"pointer_on_corrector", "a pointer input factory on a non-input plugin"},
+      {"controller_on_corrector", "a controller input factory on a non-input plugin"},
       {"bad_recording_param", "recording_param 'path' is not a string parameter of an input"},
       {"empty_param_name", "a parameter has an empty name"},
       {"duplicate_param", "parameter 'delta' is declared twice"},

@@ -174,7 +174,7 @@ TEST_CASE("the frame showing a correction in a 2,000-curve scene swaps one chunk
   snap.stacks[0].sketch = snap.stacks[1].sketch = large_sketch(2000, 200);
   snap.version = 1;
   prepare(snap);
-  openxr::MenuView view;
+  ControllerView view;
   scene.show(snap, view, 0.0);
   CHECK(scene.chunks_swapped() == 16 * 2 + 2 + 1);
 

@@ -17,8 +17,6 @@
 namespace sketchlab::vr {
 namespace {
 
-using openxr::MenuItem;
-
 constexpr double body_radius = 0.012, body_length = 0.10;  // m: a pen-sized controller
 constexpr viewer::Rgb pen_colour{0.55, 0.56, 0.60}, off_hand_colour{0.75, 0.75, 0.78};
 constexpr viewer::Rgb label_colour{0.08, 0.08, 0.10};
@@ -37,13 +35,12 @@ vtkSmartPointer<vtkActor> make_body() {
 
 // The menu's squares in the holding hand's frame, one quad per item, a
 // little inset so the items read apart.
-vtkSmartPointer<vtkPolyData> menu_squares() {
+vtkSmartPointer<vtkPolyData> menu_squares(const ControllerMenu& menu) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> quads;
-  const openxr::RigidPose origin;
-  const double h = 0.42 * openxr::menu_cell;
-  for (std::size_t i = 0; i < openxr::menu_item_count; ++i) {
-    const Vec3 c = openxr::menu_item_centre(origin, static_cast<MenuItem>(i));
+  const double h = 0.42 * menu.cell;
+  for (const ControllerMenuItem& item : menu.items) {
+    const Vec3& c = item.centre;
     const vtkIdType ids[4] = {points->InsertNextPoint(c.x() - h, c.y() - h, c.z()),
                               points->InsertNextPoint(c.x() + h, c.y() - h, c.z()),
                               points->InsertNextPoint(c.x() + h, c.y() + h, c.z()),
@@ -57,14 +54,12 @@ vtkSmartPointer<vtkPolyData> menu_squares() {
 }
 
 // Item labels in the upper part of each square, just in front of it.
-vtkSmartPointer<vtkPolyData> menu_label_data() {
+vtkSmartPointer<vtkPolyData> menu_label_data(const ControllerMenu& menu) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> polys;
-  const openxr::RigidPose origin;
-  for (std::size_t i = 0; i < openxr::menu_item_count; ++i) {
-    const auto item = static_cast<MenuItem>(i);
-    const Vec3 c = openxr::menu_item_centre(origin, item) + Vec3(0.0, 0.12 * openxr::menu_cell, 0.001);
-    const auto text = text_data(std::string(openxr::menu_label(item)), 0.0045, c, true);
+  for (const ControllerMenuItem& item : menu.items) {
+    const Vec3 c = item.centre + Vec3(0.0, 0.12 * menu.cell, 0.001);
+    const auto text = text_data(item.label, 0.0045, c, true);
     const vtkIdType base = points->GetNumberOfPoints();
     for (vtkIdType p = 0; p < text->GetNumberOfPoints(); ++p) points->InsertNextPoint(text->GetPoint(p));
     vtkCellArray* cells = text->GetPolys();
@@ -105,41 +100,21 @@ viewer::Rgb mode_colour(Layer mode, bool correction) {
   return c;
 }
 
-viewer::Rgb tip_colour(const openxr::GestureInterpreter& input, const viewer::SceneStyle& style) {
-  switch (input.tool()) {
-    case openxr::Tool::patch: return style.patch_colour;
-    case openxr::Tool::erase: return erase_colour;
-    case openxr::Tool::draw: break;
+viewer::Rgb tip_colour(const ControllerState& input, const viewer::SceneStyle& style) {
+  switch (input.tool) {
+    case ControllerTool::patch: return style.patch_colour;
+    case ControllerTool::erase: return erase_colour;
+    case ControllerTool::draw: break;
   }
-  return mode_colour(input.mode(), input.correction_enabled());
+  return mode_colour(input.mode, input.correction);
 }
 
-bool menu_item_active(MenuItem item, const openxr::GestureInterpreter& input) {
-  const bool drawing = input.tool() == openxr::Tool::draw;
-  const openxr::MenuView& v = input.menu_view();
-  switch (item) {
-    case MenuItem::scaffold: return drawing && input.mode() == Layer::scaffold;
-    case MenuItem::shape: return drawing && input.mode() == Layer::shape;
-    case MenuItem::free: return drawing && input.mode() == Layer::free;
-    case MenuItem::patch: return input.tool() == openxr::Tool::patch;
-    case MenuItem::erase: return input.tool() == openxr::Tool::erase;
-    case MenuItem::correction: return input.correction_enabled();
-    case MenuItem::compare: return v.compare;
-    case MenuItem::raw_strokes: return v.raw_strokes;
-    case MenuItem::rejected: return v.rejected;
-    case MenuItem::undo:
-    case MenuItem::redo:
-    case MenuItem::next_stack: return false;
-  }
-  return false;
-}
-
-std::string mode_label(const openxr::GestureInterpreter& input) {
-  std::string text = input.tool() == openxr::Tool::patch   ? "patch"
-                     : input.tool() == openxr::Tool::erase ? "erase"
-                     : input.mode() == Layer::automatic    ? "auto"
-                                                           : std::string(to_string(input.mode()));
-  if (!input.correction_enabled()) text += ", correction off";
+std::string mode_label(const ControllerState& input) {
+  std::string text = input.tool == ControllerTool::patch   ? "patch"
+                     : input.tool == ControllerTool::erase ? "erase"
+                     : input.mode == Layer::automatic      ? "auto"
+                                                           : std::string(to_string(input.mode));
+  if (!input.correction) text += ", correction off";
   return text;
 }
 
@@ -185,18 +160,16 @@ HandActors::HandActors(vtkRenderer* renderer, const viewer::SceneStyle& style, s
   mode_label_ = flat_actor(vtkNew<vtkPolyData>().GetPointer(), label_colour);
   renderer->AddActor(mode_label_);
 
-  const auto squares = menu_squares();
+  // The menu's geometry comes with the input's first state (set_menu).
   menu_colours_ = vtkSmartPointer<vtkUnsignedCharArray>::New();
   menu_colours_->SetNumberOfComponents(3);
-  menu_colours_->SetNumberOfTuples(static_cast<vtkIdType>(openxr::menu_item_count));
-  squares->GetCellData()->SetScalars(menu_colours_);
-  menu_ = actor_for(squares);
+  menu_ = actor_for(vtkNew<vtkPolyData>().GetPointer());
   auto* mapper = vtkPolyDataMapper::SafeDownCast(menu_->GetMapper());
   mapper->SetScalarModeToUseCellData();
   mapper->SetColorModeToDirectScalars();
   menu_->GetProperty()->LightingOff();
   renderer->AddActor(menu_);
-  menu_labels_ = flat_actor(menu_label_data(), label_colour);
+  menu_labels_ = flat_actor(vtkNew<vtkPolyData>().GetPointer(), label_colour);
   renderer->AddActor(menu_labels_);
   stack_label_ = flat_actor(vtkNew<vtkPolyData>().GetPointer(), label_colour);
   renderer->AddActor(stack_label_);
@@ -214,18 +187,29 @@ void HandActors::set_text(vtkActor* actor, std::string& shown, const std::string
   set_data(actor, text_data(text, height, origin, centred));
 }
 
-void HandActors::update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-                        openxr::Hand dominant) {
-  const auto d = static_cast<std::size_t>(dominant), o = 1 - d;
+void HandActors::set_menu(const ControllerMenu& menu) {
+  std::vector<std::string> labels;
+  for (const ControllerMenuItem& item : menu.items) labels.push_back(item.label);
+  if (labels == menu_shown_) return;
+  menu_shown_ = std::move(labels);
+  const auto squares = menu_squares(menu);
+  menu_colours_->SetNumberOfTuples(static_cast<vtkIdType>(menu.items.size()));
+  squares->GetCellData()->SetScalars(menu_colours_);
+  set_data(menu_, squares);
+  set_data(menu_labels_, menu_label_data(menu));
+}
+
+void HandActors::update(const ControllerState& input) {
+  const std::array<const ControllerHand*, 2> hands{&input.pen, &input.holder};
   for (std::size_t h = 0; h < 2; ++h) {
-    const auto& hand = frame.hands[h];
+    const ControllerHand& hand = *hands[h];
     bodies_[h]->SetVisibility(hand.tracked);
     if (hand.tracked) bodies_[h]->SetUserMatrix(pose_matrix(hand.aim));
   }
-  const auto& pen = frame.hands[d];
+  const ControllerHand& pen = input.pen;
   const viewer::Rgb tip = tip_colour(input, style_);
-  set_colour(bodies_[d], pen_colour);
-  set_colour(bodies_[o], off_hand_colour);
+  set_colour(bodies_[0], pen_colour);
+  set_colour(bodies_[1], off_hand_colour);
   tip_->SetVisibility(pen.tracked);
   mode_label_->SetVisibility(pen.tracked);
   if (pen.tracked) {
@@ -235,50 +219,52 @@ void HandActors::update(const openxr::GestureInterpreter& input, const openxr::C
     set_text(mode_label_, mode_text_, mode_label(input), 0.008, Vec3(0.0, body_radius + 0.008, 0.03), true);
   }
 
-  const auto& holder = frame.hands[o];
+  const ControllerHand& holder = input.holder;
+  const ControllerMenu& menu = input.menu;
+  const bool show_menu = holder.tracked && !menu.items.empty();
   for (vtkActor* a : {menu_.Get(), menu_labels_.Get(), stack_label_.Get(), scale_bar_.Get(), scale_label_.Get()})
-    a->SetVisibility(holder.tracked);
-  if (!holder.tracked) return;
+    a->SetVisibility(show_menu);
+  if (!show_menu) return;
+  set_menu(menu);
   const auto at_hand = pose_matrix(holder.aim);
   for (vtkActor* a : {menu_.Get(), menu_labels_.Get(), stack_label_.Get(), scale_bar_.Get(), scale_label_.Get()})
     a->SetUserMatrix(at_hand);
-  const auto hover = input.menu_hover();
-  for (std::size_t i = 0; i < openxr::menu_item_count; ++i) {
-    const auto item = static_cast<MenuItem>(i);
-    const viewer::Rgb& c = hover == item                   ? menu_hover_colour
-                           : menu_item_active(item, input) ? menu_active_colour
-                                                           : menu_item_colour;
+  for (std::size_t i = 0; i < menu.items.size(); ++i) {
+    const ControllerMenuItem& item = menu.items[i];
+    const viewer::Rgb& c = item.hovered ? menu_hover_colour : item.active ? menu_active_colour : menu_item_colour;
     for (int k = 0; k < 3; ++k)
       menu_colours_->SetComponent(static_cast<vtkIdType>(i), k, std::lround(255.0 * c[static_cast<std::size_t>(k)]));
   }
   menu_colours_->Modified();
 
-  const Vec2 half = openxr::menu_half_size();
-  const Vec3 top = openxr::menu_centre(openxr::RigidPose{}) + Vec3(-half.x(), half.y() + 0.006, 0.0);
-  const std::size_t shown = input.menu_view().stack;
+  // The stack's name above the panel's top left corner; the scale bar from
+  // its left edge, between the controller and the panel.
+  const Vec3 top = menu.centre + Vec3(-menu.half_size.x(), menu.half_size.y() + 0.006, 0.0);
+  const double left = menu.centre.x() - menu.half_size.x();
+  const std::size_t shown = input.view.stack;
   std::string stack = stack_names_.empty() ? std::string() : stack_names_[shown % stack_names_.size()];
   if (stack_names_.size() > 1) {
     stack = std::to_string(shown % stack_names_.size() + 1) + "/" + std::to_string(stack_names_.size()) + " " + stack;
-    if (input.menu_view().compare)
+    if (input.view.compare)
       stack += " vs " + stack_names_[(shown + 1) % stack_names_.size()];
   }
   set_text(stack_label_, stack_text_, stack, 0.007, top, false);
 
   // Scale bar between the controller and the menu: a round workspace length
   // drawn at its stage length, so it grows as the user zooms in.
-  const double scale = input.placement().scale;
+  const double scale = input.placement.scale;
   const auto [length, text] = scale_bar(scale);
   const double bar = length * scale;
   if (bar != bar_length_) {
     bar_length_ = bar;
-    const double y = 0.018, x0 = -0.5 * openxr::menu_columns * openxr::menu_cell;
+    const double y = 0.018, x0 = left;
     set_data(scale_bar_, polyline_data({Vec3(x0, y + 0.004, 0), Vec3(x0, y, 0), Vec3(x0 + bar, y, 0),
                                         Vec3(x0 + bar, y + 0.004, 0)}));
   }
   char zoom[32];
   std::snprintf(zoom, sizeof zoom, "  x%.2f", scale);
   set_text(scale_label_, scale_text_, text + zoom, 0.006,
-           Vec3(-0.5 * openxr::menu_columns * openxr::menu_cell, 0.024, 0.0), false);
+           Vec3(left, 0.024, 0.0), false);
 }
 
 }  // namespace sketchlab::vr

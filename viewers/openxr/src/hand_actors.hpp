@@ -2,9 +2,10 @@
 // What the user holds (issue #25): a pen-shaped controller per hand, the brush tip
 // at the dominant hand's aim point in the colour of the current mode or tool
 // (paler with correction off), a label on the dominant hand naming the mode
-// and whether correction is on, and on the other hand the hand menu
-// (hand_menu.hpp: active items lit, the hovered one highlighted), the shown
-// stack's name and a scale bar that follows the zoom.
+// and whether correction is on, and on the other hand the input's menu
+// (ControllerState::menu, laid out by the input: active items lit, the
+// hovered one highlighted), the shown stack's name and a scale bar that
+// follows the zoom.
 #include <array>
 #include <string>
 #include <vector>
@@ -14,8 +15,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 
-#include "controller_frame.hpp"
-#include "gesture_interpreter.hpp"
+#include "sketchlab/plugin/controller_input.hpp"
 #include "sketchlab/viewer/scene_style.hpp"
 
 namespace sketchlab::vr {
@@ -29,12 +29,10 @@ inline constexpr viewer::Rgb erase_colour{0.90, 0.20, 0.20};
 // Brush-tip colour by drawing mode (correction off: paler): CASSIE §3 tells
 // the controllers apart by colour.
 viewer::Rgb mode_colour(Layer mode, bool correction);
-// The brush tip's colour for the interpreter's mode, tool and correction.
-viewer::Rgb tip_colour(const openxr::GestureInterpreter& input, const viewer::SceneStyle& style);
-// Whether a menu item shows as on (current mode or tool, toggles that are set).
-bool menu_item_active(openxr::MenuItem item, const openxr::GestureInterpreter& input);
+// The brush tip's colour for the input's mode, tool and correction.
+viewer::Rgb tip_colour(const ControllerState& input, const viewer::SceneStyle& style);
 // The mode label of the dominant hand, e.g. "shape" or "scaffold, correction off".
-std::string mode_label(const openxr::GestureInterpreter& input);
+std::string mode_label(const ControllerState& input);
 // The scale bar: the shortest round workspace length (1, 2 or 5 times a
 // power of ten, metres) at least 3 cm long on the stage at zoom `scale` (so
 // under 7.5 cm, the menu's width), and its label ("5 cm").
@@ -43,10 +41,11 @@ std::pair<double, std::string> scale_bar(double scale);
 class HandActors {
  public:
   HandActors(vtkRenderer* renderer, const viewer::SceneStyle& style, std::vector<std::string> stack_names);
-  void update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-              openxr::Hand dominant);
+  void update(const ControllerState& input);
 
  private:
+  // Builds the menu's squares and labels when its items changed.
+  void set_menu(const ControllerMenu& menu);
   void set_text(vtkActor* actor, std::string& shown, const std::string& text, double height, const Vec3& origin,
                 bool centred);
   viewer::SceneStyle style_;
@@ -55,6 +54,7 @@ class HandActors {
   vtkSmartPointer<vtkActor> tip_, mode_label_;
   vtkSmartPointer<vtkActor> menu_, menu_labels_, stack_label_, scale_bar_, scale_label_;
   vtkSmartPointer<vtkUnsignedCharArray> menu_colours_;
+  std::vector<std::string> menu_shown_;  // labels of the menu the actors hold
   std::string mode_text_, stack_text_, scale_text_;
   double bar_length_ = -1.0;
 };

@@ -33,7 +33,7 @@ void set_data(vtkActor* actor, vtkPolyData* data) {
 
 void set_colour(vtkActor* actor, const viewer::Rgb& c) { actor->GetProperty()->SetColor(c[0], c[1], c[2]); }
 
-vtkSmartPointer<vtkMatrix4x4> placement_matrix(const openxr::Placement& p) {
+vtkSmartPointer<vtkMatrix4x4> placement_matrix(const StagePlacement& p) {
   auto m = vtkSmartPointer<vtkMatrix4x4>::New();
   const Mat3 r = p.scale * p.rotation.toRotationMatrix();
   for (int i = 0; i < 3; ++i) {
@@ -43,8 +43,8 @@ vtkSmartPointer<vtkMatrix4x4> placement_matrix(const openxr::Placement& p) {
   return m;
 }
 
-vtkSmartPointer<vtkMatrix4x4> pose_matrix(const openxr::RigidPose& pose) {
-  openxr::Placement p;
+vtkSmartPointer<vtkMatrix4x4> pose_matrix(const Pose& pose) {
+  StagePlacement p;
   p.rotation = pose.orientation.normalized();
   p.translation = pose.position;
   return placement_matrix(p);

@@ -10,8 +10,7 @@
 #include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
 
-#include "controller_frame.hpp"
-#include "gesture_interpreter.hpp"
+#include "sketchlab/plugin/controller_input.hpp"
 #include "sketchlab/viewer/scene_style.hpp"
 
 namespace sketchlab::vr {
@@ -25,8 +24,8 @@ void set_colour(vtkActor* actor, const viewer::Rgb& colour);
 
 // Homogeneous matrices of a workspace placement (x_stage = s R w + t) and
 // of a rigid pose (hand frame -> stage).
-vtkSmartPointer<vtkMatrix4x4> placement_matrix(const openxr::Placement& placement);
-vtkSmartPointer<vtkMatrix4x4> pose_matrix(const openxr::RigidPose& pose);
+vtkSmartPointer<vtkMatrix4x4> placement_matrix(const StagePlacement& placement);
+vtkSmartPointer<vtkMatrix4x4> pose_matrix(const Pose& pose);
 
 // One polyline cell through `points` (empty polydata for fewer than two).
 vtkSmartPointer<vtkPolyData> polyline_data(const std::vector<Vec3>& points);

@@ -17,7 +17,6 @@
 #include "sketchlab/viewer/display.hpp"
 #include "sketchlab/viewer/viewer_stacks.hpp"
 #include "vr_scene.hpp"
-#include "xr_actions.hpp"
 #include "xr_render_session.hpp"
 
 namespace sketchlab::vr {
@@ -25,24 +24,40 @@ namespace {
 
 std::filesystem::path default_recording() { return "vr-" + utc_timestamp() + ".jsonl"; }
 
-openxr::InputSettings input_settings(const StackConfig& stack, std::ostream& err) {
+// The controllers: the stack's input when it is a controller input plugin
+// (with its parameters), else the first controller input loaded, with
+// defaults. Its name goes to `name`.
+std::shared_ptr<ControllerInput> controller_input(const StackConfig& stack, const PluginHost& host,
+                                                  std::string& name, std::ostream& err) {
+  const std::vector<std::string> names = host.controller_input_names();
+  if (names.empty())
+    throw std::runtime_error("no controller input plugin is loaded (the openxr input; built when libopenxr-dev is "
+                             "installed)");
+  name = names.front();
   std::map<std::string, ParamValue> given;
   if (stack.input) {
-    if (stack.input->plugin != "openxr") {
+    if (std::find(names.begin(), names.end(), stack.input->plugin) == names.end()) {
       err << "sketchlab vr: " << stack.input->location.to_string() << ": input '" << stack.input->plugin
-          << "' ignored: VR sessions read the controllers (the openxr input)\n";
+          << "' ignored: VR sessions read the controllers (the " << name << " input)\n";
     } else {
+      name = stack.input->plugin;
       given = stack.input->params;
     }
   }
   try {
-    return openxr::settings_from_params(validate_params(openxr::input_param_specs(), given));
+    return host.make_controller_input(name, given);
   } catch (const ParamError& e) {
-    if (stack.input) rethrow_param_error(e, *stack.input);
+    if (stack.input && !given.empty()) rethrow_param_error(e, *stack.input);
     throw ConfigError(e.what());
-  } catch (const std::invalid_argument& e) {
+  } catch (const PluginError& e) {
     throw ConfigError((stack.input ? stack.input->location.to_string() + ": " : std::string()) + e.what());
   }
+}
+
+// A ControllerInput reports failures through error(); they end the command
+// as an exception would.
+void require_ok(const ControllerInput& input, const std::string& name) {
+  if (const std::string e = input.error(); !e.empty()) throw std::runtime_error("input '" + name + "': " + e);
 }
 
 // The session is destroyed while its GL context is current (the runtime
@@ -63,8 +78,8 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   // An experiment's stacks are switched and compared from the hand menu.
   const std::vector<StackConfig> configs = viewer::load_viewer_stacks(options.config, overrides);
   // The controllers are read as the first stack's input says.
-  openxr::InputSettings settings = input_settings(configs.front(), err);
-  settings.hand_menu = true;  // drawn on the other hand (hand_actors.hpp)
+  std::string input_name;
+  std::shared_ptr<ControllerInput> made_input = controller_input(configs.front(), host, input_name, err);
   std::vector<StackInstance> instances;
   std::vector<std::string> names;
   for (const StackConfig& stack : configs) {
@@ -87,9 +102,12 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
   XrRenderSession xr;
   const CurrentOnExit current{eyes};
   eyes = std::make_unique<EyeRenderer>(xr.eye_width(), xr.eye_height());
-  openxr::ControllerActions actions(xr.instance(), settings);
+  // The input's actions live on the instance and session: declared after
+  // `xr`, it is destroyed before them.
+  const std::shared_ptr<ControllerInput> input = std::move(made_input);
+  input->create_actions(xr_handle_value(xr.instance()));
+  require_ok(*input, input_name);
   xr.start(eyes->glx_handles());
-  actions.attach(xr.session());
 
   RecordingHeader header;
   header.units = "m";
@@ -98,12 +116,13 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
     header.workspace.grid_spacing = options.grid_spacing;
   }
   header.workspace.mirror_enabled = options.mirror;
-  header.source = {{"input", "openxr"}, {"runtime", xr.runtime_name()}, {"stack", names.front()},
+  header.source = {{"input", input_name}, {"runtime", xr.runtime_name()}, {"stack", names.front()},
                    {"config", std::filesystem::absolute(options.config).string()}};
+  input->attach({xr_handle_value(xr.session()), xr_handle_value(xr.base_space()), xr_handle_value(xr.view_space())},
+                header.workspace, names.size());
+  require_ok(*input, input_name);
   auto live = std::make_unique<LiveSession>(header, std::move(instances), recording, options.overwrite);
   CorrectionWorker worker(std::move(live), geometry_preparer(vr_style()));
-  openxr::GestureInterpreter input(settings, header.workspace);
-  input.set_stack_count(names.size());
   VrScene scene(eyes->renderer(), vr_style(), names);
   std::size_t shown_stack = 0;
   bool comparing = false;
@@ -137,13 +156,14 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
         [&](XrTime time) {
           if (start == 0) start = time;
           seconds = static_cast<double>(time - start) * 1e-9;
-          const openxr::ControllerFrame frame =
-              actions.poll(xr.session(), xr.base_space(), xr.view_space(), time, seconds, xr.focused());
-          for (Event& e : input.step(frame)) {
-            if (const auto* stroke = std::get_if<StrokeEvent>(&e.payload)) scene.stroke_submitted(stroke->stroke);
-            worker.submit(std::move(e));
+          input->read_frame(time, seconds, xr.focused());
+          require_ok(*input, input_name);
+          for (NextEvent e = input->next(); e; e = input->next()) {
+            if (const auto* stroke = std::get_if<StrokeEvent>(&e->payload)) scene.stroke_submitted(stroke->stroke);
+            worker.submit(std::move(*e));
           }
-          const openxr::MenuView& view = input.menu_view();
+          const ControllerState state = input->state();
+          const ControllerView& view = state.view;
           if (view.stack != shown_stack || view.compare != comparing) {
             shown_stack = view.stack;
             comparing = view.compare;
@@ -154,7 +174,7 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
           }
           // The latest finished correction; a slow stack shows it late.
           scene.show(*worker.latest(), view, seconds);
-          scene.update(input, frame, settings.dominant, seconds);
+          scene.update(state, seconds);
         },
         [&](int, const EyeView& view, std::uint32_t texture) {
           eyes->render(view.position, view.orientation, view.fov, texture);
@@ -162,10 +182,8 @@ int run_vr(const VrOptions& options, const PluginHost& host, std::ostream& out, 
     frame_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start).count());
   }
   // What was being drawn when the session ended is kept.
-  openxr::ControllerFrame last;
-  last.focused = false;
-  last.time = seconds;
-  for (Event& e : input.step(last)) worker.submit(std::move(e));
+  input->close();
+  for (NextEvent e = input->next(); e; e = input->next()) worker.submit(std::move(*e));
   const auto final_sketch = worker.finish();
   for (const auto& p : worker.problems()) err << "sketchlab vr: " << p << "\n";
   if (!options.sketch.empty()) {

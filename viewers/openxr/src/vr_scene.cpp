@@ -70,7 +70,7 @@ VrScene::VrScene(vtkRenderer* renderer, const viewer::SceneStyle& style, std::ve
 
 void VrScene::stroke_submitted(const Stroke& stroke) { feedback_.stroke_submitted(stroke); }
 
-void VrScene::show(const SketchSnapshot& snap, const openxr::MenuView& view, double now) {
+void VrScene::show(const SketchSnapshot& snap, const ControllerView& view, double now) {
   if (snap.stacks.empty() || (snap.version == shown_version_ && view == shown_view_)) return;
   if (snap.geometry.size() != snap.stacks.size())
     throw std::logic_error("VrScene::show: the snapshot carries no scene geometry (give the CorrectionWorker "
@@ -92,15 +92,14 @@ void VrScene::show(const SketchSnapshot& snap, const openxr::MenuView& view, dou
   }
 }
 
-void VrScene::update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-                     openxr::Hand dominant, double now) {
-  const auto placement = placement_matrix(input.placement());
+void VrScene::update(const ControllerState& input, double now) {
+  const auto placement = placement_matrix(input.placement);
   sketch_.set_user_matrix(placement);
   compare_.set_user_matrix(placement);
-  feedback_.set_live_stroke(input.stroke_in_progress());
+  feedback_.set_live_stroke(input.stroke);
   feedback_.update(placement, now);
-  workspace_.update(input, frame, dominant);
-  hands_.update(input, frame, dominant);
+  workspace_.update(input);
+  hands_.update(input);
 }
 
 }  // namespace sketchlab::vr

@@ -52,13 +52,12 @@ class VrScene {
   // geometry_preparer, else std::logic_error); when it or the menu's view
   // changed, swaps in the chunks that changed, and starts the feedback for a
   // new stroke.
-  void show(const SketchSnapshot& snapshot, const openxr::MenuView& view, double now);
+  void show(const SketchSnapshot& snapshot, const ControllerView& view, double now);
   // Chunk actors that got new geometry at the last show that changed
   // something (the shown stack's and the compared one's).
   std::size_t chunks_swapped() const { return chunks_swapped_; }
   // Per frame: placement, hands, menu, workspace, fades.
-  void update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-              openxr::Hand dominant, double now);
+  void update(const ControllerState& input, double now);
 
  private:
   viewer::SketchChunkActors sketch_, compare_;
@@ -67,7 +66,7 @@ class VrScene {
   CorrectionFeedback feedback_;
   std::uint64_t shown_version_ = ~std::uint64_t{0};
   std::size_t shown_strokes_ = 0;
-  openxr::MenuView shown_view_;
+  ControllerView shown_view_;
   std::size_t chunks_swapped_ = 0;
 };
 

@@ -70,20 +70,19 @@ WorkspaceActors::WorkspaceActors(vtkRenderer* renderer, const viewer::SceneStyle
   renderer->AddActor(mirror_);
 }
 
-void WorkspaceActors::update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-                             openxr::Hand dominant) {
-  const auto placement = placement_matrix(input.placement());
+void WorkspaceActors::update(const ControllerState& input) {
+  const auto placement = placement_matrix(input.placement);
   grid_points_->SetUserMatrix(placement);
   mirror_->SetUserMatrix(placement);
-  const Workspace& ws = input.workspace();
-  const auto& hand = frame.hands[static_cast<std::size_t>(dominant)];
+  const Workspace& ws = input.workspace;
+  const ControllerHand& hand = input.pen;
 
   // Grid points around the dominant hand when the workspace grid is on (a
   // local grid, so the whole lattice does not clutter the view).
   vtkNew<vtkPolyData> grid;
   const double spacing = ws.grid_spacing;
   if (ws.grid_enabled && hand.tracked && spacing > 0.0 && std::isfinite(spacing)) {
-    const Vec3 w = input.placement().to_workspace(hand.aim.position);
+    const Vec3 w = input.placement.to_workspace(hand.aim.position);
     const Vec3 cell = ((w - ws.grid_origin) / spacing).array().round();
     if (cell.allFinite() && cell.cwiseAbs().maxCoeff() < 1e6) {
       vtkNew<vtkPoints> points;
@@ -109,7 +108,7 @@ void WorkspaceActors::update(const openxr::GestureInterpreter& input, const open
     // plane is infinite; this is the part the user works near).
     const double offset = ws.mirror_offset / ws.mirror_normal.norm();
     Vec3 near = Vec3::Zero();
-    if (hand.tracked) near = input.placement().to_workspace(hand.aim.position);
+    if (hand.tracked) near = input.placement.to_workspace(hand.aim.position);
     if (!near.allFinite()) near = Vec3::Zero();
     const Vec3 centre = near - n * (n.dot(near) - offset);
     const Vec3 o = centre - 0.5 * a - 0.5 * b, p1 = o + a, p2 = o + b;

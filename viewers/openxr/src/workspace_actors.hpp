@@ -8,8 +8,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
-#include "controller_frame.hpp"
-#include "gesture_interpreter.hpp"
+#include "sketchlab/plugin/controller_input.hpp"
 #include "sketchlab/viewer/scene_style.hpp"
 
 namespace sketchlab::vr {
@@ -26,8 +25,7 @@ class WorkspaceActors {
  public:
   WorkspaceActors(vtkRenderer* renderer, const viewer::SceneStyle& style);
   // Per frame: workspace placement and what the workspace enables.
-  void update(const openxr::GestureInterpreter& input, const openxr::ControllerFrame& frame,
-              openxr::Hand dominant);
+  void update(const ControllerState& input);
 
  private:
   vtkSmartPointer<vtkActor> ground_, floor_grid_, grid_points_, mirror_;

@@ -19,6 +19,9 @@ struct CorrectionStats {
   int subsets_tried = 0;  // constraint subsets evaluated (CASSIE)
   // Anything else a corrector measures, by name (e.g. "confidence").
   std::map<std::string, double> extra;
+  // Which of its alternatives a corrector took, by name, as the plugin names
+  // it (e.g. JustDrawIt's "decision": "extend"; ScaffoldSketch's "mode").
+  std::map<std::string, std::string> outcomes;
   bool operator==(const CorrectionStats&) const = default;
 };
 

@@ -41,17 +41,16 @@ class Input {
   virtual ~Input() = default;
   // Header of the session (workspace at start, units, provenance).
   virtual RecordingHeader header() const = 0;
-  // The next event; NextEvent::not_ready() when a live input has nothing yet,
-  // NextEvent::ended() once the input has ended (then and only then
-  // finished() is true; also after an error()).
+  // The next event; NextEvent::not_ready() when a live input has nothing yet
+  // (ask again later), NextEvent::ended() once the input has ended, for good:
+  // every later call ends too. An input that fails ends (see error()).
   virtual NextEvent next() = 0;
-  virtual bool finished() const = 0;
-  // Non-empty once the input failed (device lost, unreadable file); it then
-  // reports finished(). Events already returned stay valid.
+  // Non-empty once the input failed (device lost, unreadable file); next()
+  // then ends. Events already returned stay valid.
   virtual std::string error() const { return {}; }
   // Asks a live input to end (the user stopped the command): it finishes what
   // is in progress (a stroke being drawn comes out as an event) and then
-  // reports finished(). Inputs that end by themselves ignore it.
+  // ends. Inputs that end by themselves ignore it.
   virtual void request_stop() {}
 };
 

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "sketchlab/plugin/budget.hpp"
+#include "sketchlab/plugin/controller_input.hpp"
 #include "sketchlab/plugin/corrector.hpp"
 #include "sketchlab/plugin/export.hpp"
 #include "sketchlab/plugin/input.hpp"
@@ -42,7 +43,10 @@ namespace sketchlab {
 // 5: Input::next returns NextEvent (an event, not ready, or ended);
 //    PluginDescriptor::make_pointer_input (live pointer inputs) and
 //    PluginDescriptor::recording_param.
-inline constexpr std::uint32_t plugin_abi_version = 5;
+// 6: Input::finished() is gone (NextEvent says "ended");
+//    PluginDescriptor::make_controller_input (controller_input.hpp);
+//    CorrectionStats::outcomes.
+inline constexpr std::uint32_t plugin_abi_version = 6;
 
 enum class PluginKind { corrector, surfacer, input };
 std::string_view to_string(PluginKind kind);
@@ -73,6 +77,10 @@ struct PluginDescriptor {
   // Also set, besides make_input, by input plugins whose objects a window
   // feeds with pointer events (pointer_input.hpp): the same object, typed.
   Factory<PointerInput> make_pointer_input = nullptr;
+  // Also set by input plugins that an application rendering an OpenXR
+  // session drives (controller_input.hpp); make_input then makes the input
+  // that runs on its own (e.g. a headless session).
+  Factory<ControllerInput> make_controller_input = nullptr;
   // Input plugins that play a recording file: the string parameter that
   // takes its path (an experiment sets it to each of its recordings). Empty
   // for inputs that do not play files.
@@ -120,34 +128,61 @@ class GuardedSurfacer final : public T {
 };
 
 template <class T>
-class GuardedInput final : public T {
+class GuardedInput : public T {
  public:
   using T::T;
   NextEvent next() override {
     if (!error_.empty()) return NextEvent::ended();
-    try {
-      return T::next();
-    } catch (const std::exception& e) {
-      error_ = e.what();
-    } catch (...) {
-      error_ = "unknown exception";
-    }
-    return NextEvent::ended();
+    NextEvent event = NextEvent::ended();
+    guard([&] { event = T::next(); });
+    return error_.empty() ? std::move(event) : NextEvent::ended();
   }
   void request_stop() override {
+    guard([&] { T::request_stop(); });
+  }
+  std::string error() const override { return error_.empty() ? T::error() : error_; }
+
+ protected:
+  // Runs `f`; an exception becomes the input's error (the input then ends).
+  template <class F>
+  void guard(F&& f) {
     try {
-      T::request_stop();
+      f();
     } catch (const std::exception& e) {
       error_ = e.what();
     } catch (...) {
       error_ = "unknown exception";
     }
   }
-  bool finished() const override { return !error_.empty() || T::finished(); }
-  std::string error() const override { return error_.empty() ? T::error() : error_; }
+  bool failed() const { return !error_.empty(); }
 
  private:
   std::string error_;
+};
+
+template <class T>
+class GuardedControllerInput final : public GuardedInput<T> {
+ public:
+  using GuardedInput<T>::GuardedInput;
+  void create_actions(XrHandleValue instance) override {
+    if (!this->failed()) this->guard([&] { T::create_actions(instance); });
+  }
+  void attach(const XrSessionHandles& session, const Workspace& workspace, std::size_t stack_count) override {
+    if (!this->failed()) this->guard([&] { T::attach(session, workspace, stack_count); });
+  }
+  void read_frame(std::int64_t display_time, double seconds, bool focused) override {
+    if (!this->failed()) this->guard([&] { T::read_frame(display_time, seconds, focused); });
+  }
+  ControllerState state() const override {
+    try {
+      return T::state();
+    } catch (...) {
+      return {};
+    }
+  }
+  void close() override {
+    this->guard([&] { T::close(); });
+  }
 };
 
 template <class Base, template <class> class Guard, class T>
@@ -199,6 +234,20 @@ PluginDescriptor pointer_input_descriptor(std::string name, std::string version,
   PluginDescriptor d = input_descriptor<T>(std::move(name), std::move(version), std::move(summary),
                                            std::move(params));
   d.make_pointer_input = &detail::make_guarded<PointerInput, detail::GuardedInput, T>;
+  return d;
+}
+
+// An input plugin that both runs on its own (T, an Input: make_input) and is
+// driven by an application's OpenXR session (C, a ControllerInput:
+// make_controller_input, hosts get it typed through
+// PluginHost::make_controller_input). Both constructors take the same Params.
+template <class T, class C>
+PluginDescriptor controller_input_descriptor(std::string name, std::string version, std::string summary,
+                                             std::vector<ParamSpec> params) {
+  static_assert(std::is_base_of_v<ControllerInput, C>, "a controller input plugin's class derives from ControllerInput");
+  PluginDescriptor d = input_descriptor<T>(std::move(name), std::move(version), std::move(summary),
+                                           std::move(params));
+  d.make_controller_input = &detail::make_guarded<ControllerInput, detail::GuardedControllerInput, C>;
   return d;
 }
 

@@ -102,6 +102,13 @@ class PluginHost {
                                                    const std::map<std::string, ParamValue>& params) const;
   // The loaded input plugins that make pointer inputs, in name order.
   std::vector<std::string> pointer_input_names() const;
+  // A live controller input for an application's OpenXR session
+  // (controller_input.hpp); throws PluginError when the input plugin `name`
+  // is not one (naming those that are).
+  std::shared_ptr<ControllerInput> make_controller_input(const std::string& name,
+                                                         const std::map<std::string, ParamValue>& params) const;
+  // The loaded input plugins that make controller inputs, in name order.
+  std::vector<std::string> controller_input_names() const;
 
  private:
   PluginLoadOptions options_;

@@ -43,7 +43,7 @@ class PointerInput : public Input {
   // Id of the next stroke (a live session continuing a recording starts
   // after its last stroke id).
   virtual void set_next_stroke_id(StrokeId id) = 0;
-  // Ends the input: finished() becomes true once the queue is drained.
+  // Ends the input: next() ends once the queue is drained.
   virtual void close() = 0;
 };
 

@@ -14,10 +14,9 @@ class RecordingInput : public Input {
   explicit RecordingInput(Recording recording) : recording_(std::move(recording)) {}
   RecordingHeader header() const override { return recording_.header; }
   NextEvent next() override {
-    if (finished()) return NextEvent::ended();
+    if (next_ >= recording_.events.size()) return NextEvent::ended();
     return recording_.events[next_++];
   }
-  bool finished() const override { return next_ >= recording_.events.size(); }
 
  private:
   Recording recording_;

@@ -10,12 +10,12 @@
 using namespace jdi_test;
 
 namespace {
-constexpr int new_curve = static_cast<int>(Decision::new_curve);
-constexpr int new_closed = static_cast<int>(Decision::new_closed_curve);
-constexpr int oversketch = static_cast<int>(Decision::oversketch);
-constexpr int extend = static_cast<int>(Decision::extend);
-constexpr int extend_close = static_cast<int>(Decision::extend_close);
-constexpr int combine = static_cast<int>(Decision::combine);
+constexpr Decision new_curve = Decision::new_curve;
+constexpr Decision new_closed = Decision::new_closed_curve;
+constexpr Decision oversketch = Decision::oversketch;
+constexpr Decision extend = Decision::extend;
+constexpr Decision extend_close = Decision::extend_close;
+constexpr Decision combine = Decision::combine;
 
 const View front = ortho_view(Vec3(0, 0, 3));
 
@@ -301,7 +301,7 @@ TEST_CASE("Extending from the front extrapolates the curve's depth", "[justdrawi
   const Stroke s = pixel_stroke(2, front, to_pixels(front, ext));
   const Correction c = justdrawit_correct(s, sketch, JdiParams{});
   REQUIRE(c.error.empty());
-  REQUIRE(static_cast<int>(c.stats.extra.at("decision")) == extend);
+  REQUIRE(decision_from_string(c.stats.outcomes.at("decision")) == extend);
   REQUIRE(c.edit.curves_replaced.size() == 1);
   const Points3 after = curve_points(c.edit.curves_replaced[0].curve, 1e-3);
   // The far end keeps rising in z at the curve's slope (0.5 per metre), and

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 
+#include "choice.hpp"
 #include "jdi_params.hpp"
 #include "justdrawit_corrector.hpp"
 #include "point_list.hpp"
@@ -99,9 +101,10 @@ struct Drawer {
   StrokeId next = 1;
 };
 
-inline int decision(const StepReport& r) {
-  const auto it = r.stats.extra.find("decision");
-  return it == r.stats.extra.end() ? -1 : static_cast<int>(it->second);
+// The corrector's decision for the stroke (CorrectionStats::outcomes).
+inline std::optional<Decision> decision(const StepReport& r) {
+  const auto it = r.stats.outcomes.find("decision");
+  return it == r.stats.outcomes.end() ? std::nullopt : decision_from_string(it->second);
 }
 
 }  // namespace jdi_test

@@ -23,7 +23,7 @@ TEST_CASE("Synthetic tablet sessions fold without errors", "[justdrawit][slow]")
   REQUIRE(std::system(cmd.c_str()) == 0);
   const Recording rec = read_recording(path);
   Session session(rec.header.workspace, std::make_shared<TestCorrector>(JdiParams{}), nullptr);
-  std::map<int, int> decisions;
+  std::map<std::string, int> decisions;
   int strokes = 0;
   for (const Event& e : rec.events) {
     const StepReport r = session.handle(e);
@@ -31,7 +31,9 @@ TEST_CASE("Synthetic tablet sessions fold without errors", "[justdrawit][slow]")
     ++strokes;
     INFO("stroke " << (r.stroke ? *r.stroke : 0));
     CHECK(r.error.empty());
-    ++decisions[static_cast<int>(r.stats.extra.count("decision") ? r.stats.extra.at("decision") : -1)];
+    const auto decision = r.stats.outcomes.find("decision");
+    if (decision != r.stats.outcomes.end()) CHECK(decision_from_string(decision->second).has_value());
+    ++decisions[decision != r.stats.outcomes.end() ? decision->second : "none"];
   }
   REQUIRE(strokes > 5);
   const Network& net = session.sketch().network;
@@ -52,6 +54,6 @@ TEST_CASE("Synthetic tablet sessions fold without errors", "[justdrawit][slow]")
   }
   std::string summary;
   for (const auto& [k, n] : decisions)
-    summary += std::string(k >= 0 ? to_string(static_cast<Decision>(k)) : "none") + "=" + std::to_string(n) + " ";
+    summary += k + "=" + std::to_string(n) + " ";
   WARN(model << ": " << strokes << " strokes -> " << net.curves().size() << " curves; " << summary);
 }

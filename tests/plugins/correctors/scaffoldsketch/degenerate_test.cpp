@@ -132,6 +132,6 @@ TEST_CASE("a shape stroke with fewer than two keypoints falls back to the freeha
   REQUIRE(c.error.empty());
   REQUIRE(c.edit.curves_added.size() == 1);
   CHECK(c.edit.curves_added[0].layer == Layer::shape);
-  CHECK(c.stats.extra.at("mode") == 4);
+  CHECK(c.stats.outcomes.at("mode") == mode_shape_fallback);
   CHECK(finite_edit(c.edit));
 }

@@ -103,7 +103,7 @@ HookFigures hook_figures(const ShapeParams& params, int strokes) {
     const Correction c = correct_shape_stroke(polyline_stroke(100 + trial, points, Layer::shape),
                                               sketch, params, 1e-6, PreprocessParams{});
     REQUIRE(c.error.empty());
-    if (c.stats.extra.at("mode") != mode_shape_curve) continue;
+    if (c.stats.outcomes.at("mode") != mode_shape_curve) continue;
     ++f.curves;
     const Curve& curve = c.edit.curves_added.at(0).curve;
     for (int k = 0; k < curve.segment_count(); ++k) {

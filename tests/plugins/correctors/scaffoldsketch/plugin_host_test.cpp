@@ -4,13 +4,16 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
+#include "scaffold_line.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/session.hpp"
 #include "test_paths.hpp"
 
 using namespace sketchlab;
+using namespace sketchlab::scaffoldsketch;
 
 TEST_CASE("the plugin loads and declares the paper's defaults", "[scaffoldsketch]") {
   PluginHost host;
@@ -50,10 +53,10 @@ TEST_CASE("replaying hat.jsonl through the plugin", "[scaffoldsketch][slow]") {
     ++strokes;
     INFO("stroke " << *r.stroke << ": " << r.error);
     CHECK(r.error.empty());
-    const double mode = r.stats.extra.count("mode") ? r.stats.extra.at("mode") : -1;
-    lines += mode == 0;
-    curves += mode >= 2;
-    ticks += mode == 1;
+    const std::string mode = r.stats.outcomes.count("mode") ? r.stats.outcomes.at("mode") : "";
+    lines += mode == mode_scaffold_line;
+    curves += mode == mode_shape_curve || mode == mode_shape_line || mode == mode_shape_fallback;
+    ticks += mode == mode_tick;
     iterations = std::max(iterations, r.stats.iterations);
     for (const Constraint& k : r.constraints) {
       CHECK(std::isfinite(k.residual));
@@ -84,7 +87,7 @@ TEST_CASE("scaffold lines of CASSIE sessions converge in a bounded number of IRL
     int lines = 0, level = 0;
     for (const Event& e : rec.events) {
       const StepReport r = session.handle(e);
-      if (!r.stats.extra.count("mode") || r.stats.extra.at("mode") != 0) continue;
+      if (!r.stats.outcomes.count("mode") || r.stats.outcomes.at("mode") != mode_scaffold_line) continue;
       ++lines;
       INFO("stroke " << *r.stroke);
       CHECK(r.error.empty());

@@ -122,7 +122,7 @@ SessionFigures run_session(unsigned seed, int strokes, const ScaffoldParams& par
       return std::isfinite(c.residual) && std::isfinite(c.weight) && c.target.allFinite();
     });
     REQUIRE(finite);
-    if (r.stats.extra.at("mode") != mode_scaffold_line) continue;
+    if (r.stats.outcomes.at("mode") != mode_scaffold_line) continue;
     const auto ids = curves_of_stroke(session.sketch(), id);
     REQUIRE(ids.size() == 1);
     const Curve& line = session.sketch().network.find_curve(ids[0])->curve;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "mvc_curve.hpp"
+#include "scaffold_line.hpp"
 #include "shape_keypoints.hpp"
 #include "shape_stroke.hpp"
 #include "sketchlab/geometry/bezier.hpp"
@@ -73,7 +74,7 @@ TEST_CASE("a shape stroke around a square scaffold becomes a circle (Figure 5)",
   REQUIRE(c.error.empty());
   REQUIRE(c.edit.curves_added.size() == 1);
   const Curve& curve = c.edit.curves_added[0].curve;
-  CHECK(c.stats.extra.at("mode") == 2);
+  CHECK(c.stats.outcomes.at("mode") == mode_shape_curve);
   CHECK(c.stats.extra.at("keypoints") == 5);
   CHECK(curve.closed);
   REQUIRE(curve.segment_count() == 4);
@@ -127,7 +128,7 @@ TEST_CASE("a roughly straight shape stroke becomes an exact line", "[scaffoldske
   CHECK(line.kind == CurveKind::line);
   CHECK(line.control_points.front() == p);
   CHECK(line.control_points.back() == q);
-  CHECK(c.stats.extra.at("mode") == 3);
+  CHECK(c.stats.outcomes.at("mode") == mode_shape_line);
 }
 
 TEST_CASE("a bent shape stroke is not straightened", "[scaffoldsketch]") {
@@ -167,7 +168,7 @@ TEST_CASE("a straight shape stroke: the paper's line or the authors' polyline (s
   const Stroke s = polyline_stroke(70, pts, Layer::shape);
   const Correction line = correct_shape_stroke(s, sketch, ShapeParams{}, 1e-6, PreprocessParams{});
   REQUIRE(line.error.empty());
-  CHECK(line.stats.extra.at("mode") == 3);
+  CHECK(line.stats.outcomes.at("mode") == mode_shape_line);
   CHECK(line.stats.extra.at("keypoints") == 3);
   const Curve& exact = line.edit.curves_added.at(0).curve;
   CHECK(exact.kind == CurveKind::line);
@@ -178,7 +179,7 @@ TEST_CASE("a straight shape stroke: the paper's line or the authors' polyline (s
   authors.straight_shape = StraightShape::polyline;
   const Correction poly = correct_shape_stroke(s, sketch, authors, 1e-6, PreprocessParams{});
   REQUIRE(poly.error.empty());
-  CHECK(poly.stats.extra.at("mode") == 3);
+  CHECK(poly.stats.outcomes.at("mode") == mode_shape_line);
   const Curve& c = poly.edit.curves_added.at(0).curve;
   REQUIRE(c.segment_count() == 2);
   CHECK((evaluate(c, 0) - p).norm() < 1e-12);

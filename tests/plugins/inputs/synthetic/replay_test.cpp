@@ -26,7 +26,7 @@ Replayed replay(const PluginHost& host, const std::map<std::string, ParamValue>&
     r.relation_events += std::holds_alternative<RelationEvent>(e->payload);
     r.reports.push_back(r.session.handle(*e));
   }
-  CHECK(input->finished());
+  CHECK(input->next().is_ended());
   CHECK(input->error().empty());
   return r;
 }

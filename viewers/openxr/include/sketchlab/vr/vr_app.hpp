@@ -1,8 +1,10 @@
 #pragma once
 // `sketchlab vr CONFIG`: draw in VR with a plugin stack. The session is an
 // OpenXR session (see viewers/openxr/README section in the top-level
-// README), input from the openxr input's action set, correction on a worker
-// thread, every event recorded (append + flush) before it is corrected.
+// README), the controllers read by a controller input plugin (the openxr
+// input, made through `host`: sketchlab/plugin/controller_input.hpp),
+// correction on a worker thread, every event recorded (append + flush)
+// before it is corrected.
 #include <filesystem>
 #include <iosfwd>
 #include <string>

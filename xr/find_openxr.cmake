@@ -1,6 +1,6 @@
 # Defines the INTERFACE target sketchlab_openxr (headers + loader) when the
 # OpenXR loader is found (CMake config package, else pkg-config `openxr`);
-# shared by the openxr input plugin and the VR viewer.
+# shared by the openxr input plugin and the VR viewer (xr/CMakeLists.txt).
 if(TARGET sketchlab_openxr)
   return()
 endif()
