@@ -242,6 +242,8 @@ int main(int argc, char** argv) {
   line("replay.matched_created", total_replay.matched_created, "patches");
   line("replay.matched_elsewhere", total_replay.matched_elsewhere, "patches");
   line("replay.ours_removed", total_replay.ours_removed, "patches");
+  line("replay.cassie_broken", total_replay.cassie_broken, "patches");
+  line("replay.matched_broken", total_replay.matched_broken, "patches");
   line("replay.recall_created", total_replay.recall_created(), "1");
   line("replay.precision_created", total_replay.precision_created(), "1");
   line("replay.recall_final", total_replay.recall_final(), "1");
