@@ -1,6 +1,7 @@
 #include "cassie_breaks.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <vector>
 
