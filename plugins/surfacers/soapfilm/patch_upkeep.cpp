@@ -237,7 +237,8 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
         if (int s = graph.segment_at(inc.curve, inc.t); s >= 0) around_deleted.insert(s);
     }
 
-  // Item 25: old curves' segments split by a node this edit added on them.
+  // Item 25 read the other way (seed_split_segments, off by default): old
+  // curves' segments split by a node this edit added on them.
   std::set<int> split;
   if (params.seed_split_segments)
     for (const Node& n : last.nodes_added)
