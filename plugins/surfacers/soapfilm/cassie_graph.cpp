@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "cassie_breaks.hpp"
 #include "cassie_json.hpp"
 #include "patch_upkeep.hpp"
 #include "sketchlab/network_curve.hpp"
@@ -136,8 +137,9 @@ FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_jso
   std::set<std::int64_t> alive;
   for (const auto& [c, s] : net.stroke_of) alive.insert(s);
   std::set<StrokeSet> automatic, manual;
+  const std::map<std::int64_t, double> broken = inferred_breaks(session);
   for (const CassiePatch& p : session.patches) {
-    if (p.deleted_by_hand || p.strokes.empty()) continue;
+    if (p.deleted_by_hand || p.strokes.empty() || broken.count(p.id)) continue;
     if (!std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); })) continue;
     (p.automatic ? automatic : manual).insert(p.strokes);
   }

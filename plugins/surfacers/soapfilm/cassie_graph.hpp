@@ -48,9 +48,11 @@ struct FidelityReport {
 };
 
 // CASSIE's set: the automatic patches (foundByAlgo) of `session` not deleted
-// by hand whose strokes all are in the final network. It over-counts what
-// CASSIE showed at the end: a patch later broken by a crossing stroke keeps
-// its strokes alive (CASSIE logs no automatic deletion).
+// by hand, not broken by a later stroke as far as its log tells
+// (cassie_breaks.hpp), whose strokes all are in the final network. It may
+// still over-count what CASSIE showed at the end: a patch broken without
+// both halves made keeps its strokes alive (CASSIE logs no automatic
+// deletion).
 FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_json, const CassieSession& session,
                                    const CycleSearchParams& params);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "cassie_breaks.hpp"
 #include "patch_upkeep.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/session.hpp"
@@ -92,6 +93,8 @@ ReplayFigures& ReplayFigures::operator+=(const ReplayFigures& o) {
   matched_created += o.matched_created;
   matched_elsewhere += o.matched_elsewhere;
   ours_removed += o.ours_removed;
+  cassie_broken += o.cassie_broken;
+  matched_broken += o.matched_broken;
   cassie_final += o.cassie_final;
   rebuilt_ours += o.rebuilt_ours;
   rebuilt_found += o.rebuilt_found;
@@ -286,6 +289,10 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
   for (const CassieStroke& s : session.strokes)
     if (!s.deleted) alive.insert(s.id);
   std::set<StrokeSet> cassie_final, cassie_ever, by_hand;
+  const std::map<std::int64_t, double> broken = inferred_breaks(session);
+  std::set<std::pair<std::size_t, StrokeSet>> ours_removed_at;
+  for (const ReplayEvent& e : result.events)
+    for (const StrokeSet& s : e.removed) ours_removed_at.insert({e.group, s});
   for (const CassiePatch& p : session.patches) {
     if (!p.automatic) {
       by_hand.insert(p.strokes);
@@ -295,6 +302,11 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     ++result.figures.cassie_created;
     cassie_ever.insert(p.strokes);
     const bool all_alive = std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); });
+    if (const auto b = broken.find(p.id); b != broken.end()) {
+      ++result.figures.cassie_broken;
+      if (const auto g = group_of(b->second); g && ours_removed_at.count({*g, p.strokes})) ++result.figures.matched_broken;
+      continue;
+    }
     if (!p.deleted_by_hand && all_alive && !p.strokes.empty()) cassie_final.insert(p.strokes);
   }
   ReplayCauses& why = result.figures.causes;

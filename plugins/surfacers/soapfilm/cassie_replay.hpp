@@ -40,8 +40,12 @@ struct ReplayFigures {
   int matched_created = 0;     // same strokes, same event group
   int matched_elsewhere = 0;   // CASSIE's not matched, but we created those strokes at another group
   int ours_removed = 0;        // automatic patches we removed (crossed, or a boundary curve deleted)
-  // At the end: CASSIE's automatic patches not deleted by hand whose strokes
-  // are all alive, vs our automatic patches alive (unique stroke sets).
+  // CASSIE's automatic patches a later stroke broke (cassie_breaks.hpp), and
+  // of those, the ones we removed over the same strokes at the same event.
+  int cassie_broken = 0, matched_broken = 0;
+  // At the end: CASSIE's automatic patches not deleted by hand, not broken
+  // (cassie_breaks.hpp), whose strokes are all alive, vs our automatic
+  // patches alive (unique stroke sets).
   int cassie_final = 0, ours_final = 0, matched_final = 0;
   // The final-network comparison (cassie_graph.hpp) on the network this
   // replay built: every segment of it searched, the cycles' stroke sets vs

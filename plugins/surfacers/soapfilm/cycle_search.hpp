@@ -43,6 +43,12 @@ struct CycleSearchParams {
   // Item 24: a walk stops at a segment already bounding two patches; with
   // this unset only automatic patches count (thesis §3.3.2.2 read literally).
   bool manual_patches_count = true;
+  // Item 25 ("two walks per new segment") read the other way: an old curve's
+  // segments at a node the edit added on it (a new stroke crossing or ending
+  // on it splits one of its segments in two) are new segments too, searched
+  // after the new curves' own. Off: it also closes a cylinder's caps, which
+  // CASSIE leaves to the user; a documented variant (README.md: measured).
+  bool seed_split_segments = false;
   // Walks longer than this many segments are abandoned; 0: no limit (the
   // app's walk, item 24). A documented variant (README.md).
   int max_segments = 0;

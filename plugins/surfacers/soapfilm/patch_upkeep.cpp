@@ -237,6 +237,15 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
         if (int s = graph.segment_at(inc.curve, inc.t); s >= 0) around_deleted.insert(s);
     }
 
+  // Item 25 read the other way (seed_split_segments, off by default): old
+  // curves' segments split by a node this edit added on them.
+  std::set<int> split;
+  if (params.seed_split_segments)
+    for (const Node& n : last.nodes_added)
+      if (net.find_node(n.id))
+        for (const HalfEdge& h : graph.outgoing(n.id))
+          if (!new_curves.count(graph.segment(h.segment).curve)) split.insert(h.segment);
+
   std::vector<int> seeds;
   std::set<int> seen;
   auto push = [&](int s) {
@@ -244,6 +253,7 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
   };
   for (int s : first_seeds) push(s);
   for (int s : ordered(graph, fresh)) push(s);
+  for (int s : ordered(graph, split)) push(s);
   for (int s : ordered(graph, around_deleted)) push(s);
 
   // Walk first, then read only the patches on the curves the walks reached.

@@ -43,7 +43,7 @@ struct ReplayCauses {
   int extra_by_hand = 0;    // CASSIE's user added a patch over the same strokes by hand (foundByAlgo false)
   int extra_other = 0;
   // CASSIE patches alive in its log at the end but not ours (sum = cassie_final - matched_final).
-  int end_removed_by_crossing = 0;  // we created it; a later stroke broke it (item 25)
+  int end_removed_by_crossing = 0;  // we created it; a later stroke broke it (item 25), CASSIE not (cassie_breaks.hpp)
   int end_removed_other = 0;        // we created it; a curve deletion or the user's patch deletion removed it
   int end_never_created = 0;
   // Ours alive at the end that are not in CASSIE's final set (sum = ours_final - matched_final).

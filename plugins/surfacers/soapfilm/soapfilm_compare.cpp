@@ -158,8 +158,9 @@ int main(int argc, char** argv) {
   }
 
   std::cout << "| session | system | final: recall | final: precision | final: extra that CASSIE's user added "
-               "| replay: created recall | replay: created precision | replay: end recall | replay: end precision |\n"
-            << "|---|---|---|---|---|---|---|---|---|\n";
+               "| replay: created recall | replay: created precision | replay: end recall | replay: end precision "
+               "| replay: CASSIE's breaks we make at that event |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n";
   FidelityReport total_final;
   ReplayFigures total_replay;
   for (const Row& r : rows) {
@@ -174,14 +175,15 @@ int main(int argc, char** argv) {
       std::cout << ratio(r.final.found, r.final.cassie_automatic) << " | " << ratio(r.final.found, r.final.ours) << " | "
                 << r.final.extra_matching_manual << "/" << r.final.extra << " | ";
     if (!r.replay_error.empty())
-      std::cout << "error | error | error | error |\n";
+      std::cout << "error | error | error | error | error |\n";
     else if (r.system != 2)
-      std::cout << "– | – (" << r.replay.ours_created << " created) | – | – (" << r.replay.ours_final << " at the end) |\n";
+      std::cout << "– | – (" << r.replay.ours_created << " created) | – | – (" << r.replay.ours_final << " at the end) | – |\n";
     else
       std::cout << ratio(r.replay.matched_created, r.replay.cassie_created) << " | "
                 << ratio(r.replay.matched_created, r.replay.ours_created) << " | "
                 << ratio(r.replay.matched_final, r.replay.cassie_final) << " | "
-                << ratio(r.replay.matched_final, r.replay.ours_final) << " |\n";
+                << ratio(r.replay.matched_final, r.replay.ours_final) << " | "
+                << ratio(r.replay.matched_broken, r.replay.cassie_broken) << " |\n";
     if (r.system == 2 && r.final_error.empty() && r.has_graph) total_final += r.final;
     if (r.system == 2 && r.replay_error.empty()) total_replay += r.replay;
   }
@@ -190,7 +192,8 @@ int main(int argc, char** argv) {
             << total_final.extra << " | " << ratio(total_replay.matched_created, total_replay.cassie_created) << " | "
             << ratio(total_replay.matched_created, total_replay.ours_created) << " | "
             << ratio(total_replay.matched_final, total_replay.cassie_final) << " | "
-            << ratio(total_replay.matched_final, total_replay.ours_final) << " |\n\n";
+            << ratio(total_replay.matched_final, total_replay.ours_final) << " | "
+            << ratio(total_replay.matched_broken, total_replay.cassie_broken) << " |\n\n";
 
   // The replay's disagreements by cause (replay_causes.hpp), Patch sessions.
   std::cout << "| session | missed at creation: made at another event | a curve absent | no closed path (a node missing) | no walk closes over it "
@@ -242,6 +245,8 @@ int main(int argc, char** argv) {
   line("replay.matched_created", total_replay.matched_created, "patches");
   line("replay.matched_elsewhere", total_replay.matched_elsewhere, "patches");
   line("replay.ours_removed", total_replay.ours_removed, "patches");
+  line("replay.cassie_broken", total_replay.cassie_broken, "patches");
+  line("replay.matched_broken", total_replay.matched_broken, "patches");
   line("replay.recall_created", total_replay.recall_created(), "1");
   line("replay.precision_created", total_replay.precision_created(), "1");
   line("replay.recall_final", total_replay.recall_final(), "1");

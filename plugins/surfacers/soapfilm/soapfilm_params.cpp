@@ -41,6 +41,8 @@ const ParamTable<SoapfilmParams>& parameters() {
           .integer("break_reach", nested_field(&P::search, &CycleSearchParams::break_reach), 0.0, 1000.0, "",
                    "a new segment entering a patch breaks it if it reaches the cycle again through at most this many "
                    "two-segment nodes (CASSIE app: 5)")
+          .boolean("seed_split_segments", nested_field(&P::search, &CycleSearchParams::seed_split_segments),
+                   "also search an old curve's segments split by a node the edit added on it (CASSIE app, item 25)")
           .boolean("manual_patches_count", nested_field(&P::search, &CycleSearchParams::manual_patches_count),
                    "manual patches count towards the two patches a segment may bound")
           .integer("max_cycle_segments", nested_field(&P::search, &CycleSearchParams::max_segments), 0.0, 1000.0, "",

@@ -167,6 +167,24 @@ TEST_CASE("cylinder: two circles and four sides give the four side patches", "[s
   CHECK(caps == 0);
 }
 
+TEST_CASE("seed_split_segments: the circles the sides end on are searched too, closing the caps", "[soapfilm]") {
+  // Item 25 read the other way (README.md): an old curve's segments split by
+  // a new node count as new; then the walks along a circle close its cap.
+  const auto curves = cylinder(0.1, 0.3);
+  PreparedSession s(curves, make_soapfilm({{"seed_split_segments", true}}));
+  s.draw_all(curves.size());
+  int sides = 0, caps = 0;
+  for (const auto& [id, p] : s.network().patches()) {
+    std::set<CurveId> cs;
+    for (const auto& piece : p.boundary) cs.insert(piece.curve);
+    CHECK(closed_chain(p));
+    sides += cs.size() == 4 ? 1 : 0;
+    caps += cs.size() == 1 ? 1 : 0;
+  }
+  CHECK(sides == 4);
+  CHECK(caps == 2);
+}
+
 TEST_CASE("a crossing curve splits a patch in two, deleting it merges them back", "[soapfilm]") {
   const double a = 0.2;
   const Vec3 p00(0, 0, 0), p10(a, 0, 0), p11(a, a, 0), p01(0, a, 0);

@@ -58,26 +58,31 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   INFO("replay created " << replay.matched_created << "/" << replay.cassie_created << " of " << replay.ours_created
                          << "; end " << replay.matched_final << "/" << replay.cassie_final << " of "
                          << replay.ours_final);
-  CHECK(final.cassie_automatic == 650);
+  // CASSIE's set at the end leaves out the patches its log shows broken by
+  // a later stroke (cassie_breaks.hpp): 362 of its automatic patches.
+  CHECK(final.cassie_automatic == 479);
   CHECK(replay.cassie_created == 1727);
-  // Measured: final 365/650 (56.2 %), precision 365/505 (72.3 %); replay
-  // created 1411/1727 (81.7 %), precision 79.9 %; at the end 415/651
-  // (63.7 %), precision 88.1 %. The whole-network search on the replay's
-  // own final network: 393/651.
-  CHECK(final.found >= 360);
-  CHECK(double(final.found) / final.ours >= 0.71);
+  CHECK(replay.cassie_broken == 362);
+  // Measured: final 356/479 (74.3 %), precision 356/505 (70.5 %); replay
+  // created 1411/1727 (81.7 %), precision 79.9 %; at the end 407/480
+  // (84.8 %), precision 86.4 %; 320 of CASSIE's 362 breaks made by us at
+  // the same event. The whole-network search on the replay's own final
+  // network: 385/480.
+  CHECK(final.found >= 352);
+  CHECK(double(final.found) / final.ours >= 0.70);
   CHECK(replay.recall_created() >= 0.81);
   CHECK(replay.precision_created() >= 0.79);
-  CHECK(replay.recall_final() >= 0.63);
-  CHECK(replay.precision_final() >= 0.87);
-  CHECK(replay.rebuilt_found >= 388);
+  CHECK(replay.recall_final() >= 0.84);
+  CHECK(replay.precision_final() >= 0.86);
+  CHECK(replay.matched_broken >= 315);
+  CHECK(replay.rebuilt_found >= 380);
   // The replay's main causes of disagreement (README.md, "Causes"):
   // measured 86 CASSIE patches whose curves hold no closed path in our graph
-  // and 87 that one does but no walk follows, 174 broken by a later
-  // crossing; fewer is better, more is a regression.
+  // and 87 that one does but no walk follows, 20 broken by a later crossing
+  // CASSIE did not break; fewer is better, more is a regression.
   CHECK(replay.causes.miss_not_closed <= 90);
   CHECK(replay.causes.miss_not_found <= 92);
-  CHECK(replay.causes.end_removed_by_crossing <= 180);
+  CHECK(replay.causes.end_removed_by_crossing <= 25);
   // Most extra cycles on the final networks are patches CASSIE's users had
   // to add by hand (the original missed them).
   CHECK(final.extra_matching_manual * 10 >= final.extra * 7);
