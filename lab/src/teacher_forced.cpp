@@ -198,6 +198,9 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
         else if (ref == reference.end()) r.error = "no reference curve on track " + opt.track;
         if (r.error.empty()) {
           r.compared = true;
+          r.reference_curve = ref->second;
+          r.output_curve = out_curve->curve;
+          r.constraints = c.constraints;
           r.reference_line = ref->second.kind == CurveKind::line;
           r.output_line = out_curve->curve.kind == CurveKind::line;
           compare(ref->second, out_curve->curve, opt.resample, r);

@@ -192,6 +192,13 @@ void bind_teacher_forced(py::module_& m) {
       .def_readonly("max_deviation", &TeacherForcedStroke::max_deviation)
       .def_readonly("reference_snap", &TeacherForcedStroke::reference_snap)
       .def_readonly("output_snap", &TeacherForcedStroke::output_snap)
+      .def_readonly("reversed", &TeacherForcedStroke::reversed)
+      .def_readonly("reference_curve", &TeacherForcedStroke::reference_curve)
+      .def_readonly("output_curve", &TeacherForcedStroke::output_curve)
+      .def_readonly("constraints", &TeacherForcedStroke::constraints)
+      .def_readonly("constraints_considered", &TeacherForcedStroke::constraints_considered)
+      .def_readonly("constraints_enforced", &TeacherForcedStroke::constraints_enforced)
+      .def_readonly("stats", &TeacherForcedStroke::stats)
       .def_readonly("latency_ms", &TeacherForcedStroke::latency_ms);
   py::class_<TeacherForcedSummary>(m, "TeacherForcedSummary")
       .def_readonly("strokes", &TeacherForcedSummary::strokes)

@@ -137,6 +137,20 @@ def test_teacher_forced_matches_the_cli(sl, small):
     assert float(cli["snap_agreement"].split()[0]) == pytest.approx(100 * s.snap_agreement, abs=1e-3)
 
 
+def test_teacher_forced_rows_hold_the_curves_compared(sl, small):
+    strokes = [r for r in sl.teacher_forced(small, sl.corrector("snap_ends")) if r.compared]
+    assert strokes
+    for r in strokes:
+        ref, out = r.reference_curve, r.output_curve
+        # The row's end distance is the one between these two curves' ends.
+        a0, a1 = np.asarray(ref.control_points)[[0, -1]]
+        b = np.asarray(out.control_points)[[-1, 0] if r.reversed else [0, -1]]
+        worst = max(np.linalg.norm(a0 - b[0]), np.linalg.norm(a1 - b[1]))
+        assert worst == pytest.approx(r.endpoint_distance, abs=1e-12)
+        assert r.constraints_considered == len(r.constraints)
+        assert r.constraints_enforced == sum(c.enforced for c in r.constraints)
+
+
 def test_long_calls_release_the_gil(sl, small):
     stack = sl.stack("cassie")
     ticks = []

@@ -7,6 +7,7 @@
 #include "anchor_binding.hpp"
 #include "brush_detection.hpp"
 #include "cassie_edit.hpp"
+#include "input_density.hpp"
 #include "line_beautify.hpp"
 #include "mirror_plane.hpp"
 #include "on_surface.hpp"
@@ -240,7 +241,9 @@ Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const Cass
   Correction out;
   Preprocessed pre;
   try {
-    pre = preprocess_stroke(stroke, params.preprocess);  // items 1–4
+    const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
+    pre = preprocess_stroke(densify_stroke(stroke, params.input_spacing_factor * params.delta / scale),
+                            params.preprocess);  // items 1–4
   } catch (const std::exception& e) {
     out.error = e.what();
     return out;

@@ -135,6 +135,9 @@ const ParamTable<Settings>& parameters() {
           .boolean("filter_input", pre(&PreprocessParams::app_filter_input),
                    "drop samples closer than 0.1δ, strokes too short or brief, samples of the first and last "
                 "0.02 s (item 1; cassie_app preprocessing)")
+          .real("input_spacing", c(&C::input_spacing_factor), 0.0, 5.0, "δ",
+                "before preprocessing, insert points in gaps between samples longer than this (0: off); "
+                "exported CASSIE sessions are RDP-thinned at 2 mm, the app's turn rules saw 90 Hz (items 3-4)")
           .real("fit_error", pre(&PreprocessParams::fit_error_factor), 0.01, 5.0, "δ",
                 "poly-Bézier fitting tolerance (item 4: 0.5δ)")
           .real("sharp_angle", pre(&PreprocessParams::max_g1_angle), 0.05, pi, "rad",

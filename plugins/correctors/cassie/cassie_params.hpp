@@ -71,6 +71,7 @@ struct CassieParams {
   bool on_surface = true;
   MirrorMode mirror = MirrorMode::workspace;
   PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
+  double input_spacing_factor = 0.0;     // ×δ, densify the samples first (input_density.hpp; 0: off)
 };
 
 // Thresholds of one stroke: the factors above times δ(s) = δ/s.

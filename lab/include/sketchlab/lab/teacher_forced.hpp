@@ -56,6 +56,10 @@ struct TeacherForcedStroke {
   std::array<bool, 2> candidate_enforced{false, false};
   int constraints_considered = 0, constraints_enforced = 0;
   CorrectionStats stats;
+  // The two curves compared (set when `compared`), for analyses beyond the
+  // figures above (e.g. `sketchlab.teacher_forced` in Python).
+  Curve reference_curve, output_curve;
+  std::vector<Constraint> constraints;  // the corrector's, as it returned them
   double latency_ms = 0.0;  // wall time of Corrector::correct
   double cpu_ms = 0.0;      // CPU time of the calling thread in it (thread_cpu_ms)
 };
