@@ -5,7 +5,8 @@
 # OUT/sessions, runs the experiment on them into OUT/runs, and prints one
 # line per (model, style, noise, stack): the median over the seeds of the
 # ground-truth figures of metrics.csv (aligned: gt_distance_mean_aligned_eye_scale_m,
-# written for one-view sessions; raw: gt_distance_mean_m; recalls).
+# written for one-view sessions, and raw: gt_distance_mean_m, in mm;
+# parallel/perpendicular/coincident recalls; dangling endpoint ratio).
 #
 #   scripts/tablet-sweep.sh OUT
 #   MODELS="cube lamp" SEEDS="1 2" NOISES="0 1" STYLES=analytic scripts/tablet-sweep.sh OUT
@@ -21,6 +22,7 @@ seeds=${SEEDS:-1 2 3}
 noises=${NOISES:-0 0.5 1 2}
 styles=${STYLES:-analytic justdrawit}
 mkdir -p "$out/sessions"
+out=$(cd "$out" && pwd)
 for model in $models; do
   for style in $styles; do
     for seed in $seeds; do
@@ -38,10 +40,10 @@ stacks:
   - {name: freehand, corrector: {plugin: freehand}}
   - {name: analytic, corrector: {plugin: analytic}}
   - {name: justdrawit, corrector: {plugin: justdrawit}}
-outputs: {dir: runs, timestamp: false, report: true, sketch_json: false, stroke_csv: false, ply: false, obj: false, mlp: false, pictures: false}
+outputs: {dir: $out/runs, timestamp: false, report: true, sketch_json: false, stroke_csv: false, ply: false, obj: false, mlp: false, pictures: false}
 EOF
 rm -rf "$out/runs/tablet-sweep"
-"$bin" run "$out/sweep.yaml" --no-timings >/dev/null
+"$bin" run "$out/sweep.yaml" --no-timings >/dev/null 2>&1
 # metrics.csv: recording,stack,<sweep values>,ok,error,wall_ms,<metrics...>
 awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_parallel_recall gt_perpendicular_recall gt_coincident_point_recall dangling_endpoint_ratio" '
   function median(list,   n, a, i, j, t) {
@@ -57,10 +59,15 @@ awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_para
     for (i = 1; i <= nk; ++i) if ((k[i] in col) && $col[k[i]] != "") v[group, i] = v[group, i] " " $col[k[i]]
   }
   END {
-    printf "model style noise stack aligned_m raw_m parallel perpendicular coincident dangling\n"
     for (g = 1; g <= ng; ++g) {
       printf "%s", order[g]
-      for (i = 1; i <= nk; ++i) printf " %s", median(v[order[g], i])
+      for (i = 1; i <= nk; ++i) {
+        x = median(v[order[g], i])
+        if (x == "-") printf " -"
+        else if (i <= 2) printf " %.1f", 1000 * x
+        else printf " %.2f", x
+      }
       printf "\n"
     }
-  }' "$out/runs/tablet-sweep/metrics.csv" | sort -k1,1 -k2,2 -k4,4 -k3,3n | column -t
+  }' "$out/runs/tablet-sweep/metrics.csv" | sort -k1,1 -k2,2 -k4,4 -k3,3n |
+  { echo "model style noise stack aligned_mm raw_mm parallel perpendicular coincident dangling"; cat; } | column -t
