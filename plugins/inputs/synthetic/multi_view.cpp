@@ -51,7 +51,7 @@ std::vector<PlannedStroke> justdrawit_strokes(const GroundTruthNetwork& plan, co
   // is none of its types and would make a new curve.
   for (std::size_t i = 0; i < plan.curves.size(); ++i) {
     const Curve& c = plan.curves[i].curve;
-    out.push_back({c.closed ? c : sub_curve(c, 0.1 * c.t_max(), 0.9 * c.t_max()), plan.curves[i].layer, i, 1});
+    out.push_back({c.closed ? c : sub_curve(c, 0.1 * c.t_max(), 0.9 * c.t_max()), plan.curves[i].layer, i, 1, planes[i]});
   }
   return out;
 }
