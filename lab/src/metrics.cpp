@@ -364,14 +364,26 @@ void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMe
   using Key = std::pair<StrokeId, StrokeId>;
   std::map<std::string, std::set<Key>> intended, detected;
   const std::set<StrokeId> alive(strokes.begin(), strokes.end());
+  // A stroke whose curve a later stroke took over (a curve drawn in several
+  // strokes or oversketched, JustDrawIt §1 and §4.4, keeps one curve for the
+  // last stroke) stands for the same intended curve as the live stroke with
+  // its ground truth: its relations are scored on that stroke.
+  const auto live_stroke_for = [&](StrokeId s) -> std::optional<StrokeId> {
+    if (alive.count(s)) return s;
+    const auto gt = refs->second.find(s);
+    if (gt == refs->second.end()) return std::nullopt;
+    for (StrokeId live : strokes)
+      if (refs->second.at(live) == gt->second) return live;
+    return std::nullopt;
+  };
   auto rel = r.session.relations().find("ground_truth");
   if (rel != r.session.relations().end())
     for (const auto& e : rel->second) {
-      if (e.strokes.empty() || !std::all_of(e.strokes.begin(), e.strokes.end(),
-                                            [&](StrokeId s) { return alive.count(s); }))
-        continue;
-      const StrokeId a = e.strokes.front(), b = e.strokes.size() > 1 ? e.strokes[1] : a;
-      intended[std::string(to_string(e.kind))].insert({std::min(a, b), std::max(a, b)});
+      if (e.strokes.empty()) continue;
+      const auto a = live_stroke_for(e.strokes.front());
+      const auto b = e.strokes.size() > 1 ? live_stroke_for(e.strokes[1]) : a;
+      if (!a || !b || (e.strokes.size() > 1 && *a == *b)) continue;
+      intended[std::string(to_string(e.kind))].insert({std::min(*a, *b), std::max(*a, *b)});
     }
   for (std::size_t i = 0; i < strokes.size(); ++i) {
     const Curve& a = *first_curve(net, sketch, strokes[i]);

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "session_fixtures.hpp"
+#include "sketchlab/geometry/bezier.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/lab/metrics.hpp"
 #include "sketchlab/view.hpp"
@@ -99,4 +100,54 @@ TEST_CASE("the eye-scale alignment removes exactly the scale one view leaves ope
   const CaseMetrics two = compute_metrics(eye_scaled_case(0.4, true));
   CHECK(two.values.count("gt_distance_mean_m") == 1);
   CHECK(two.values.count("gt_distance_mean_aligned_eye_scale_m") == 0);
+}
+
+namespace {
+
+// Draws each stroke's intended curve exactly; a stroke whose intended curve
+// is already drawn takes that curve over (removes it, adds its own), as
+// JustDrawIt keeps one curve for the last stroke of a multi-stroke curve.
+class TakeOverCorrector : public Corrector {
+ public:
+  explicit TakeOverCorrector(std::map<StrokeId, Curve> truth) : truth_(std::move(truth)) {}
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    Correction out;
+    for (const auto& [id, c] : sketch.network.curves())
+      if (c.curve == truth_.at(stroke.id)) out.edit.curves_removed.push_back(id);
+    NetworkCurve nc;
+    nc.id = sketch.network.next_curve_id();
+    nc.curve = truth_.at(stroke.id);
+    nc.source_stroke = stroke.id;
+    out.edit.curves_added.push_back(nc);
+    return out;
+  }
+
+ private:
+  std::map<StrokeId, Curve> truth_;
+};
+
+}  // namespace
+
+TEST_CASE("relations on a stroke whose curve a later stroke took over are scored on that stroke",
+          "[metrics][ground_truth]") {
+  const Curve a = make_line({0, 1, 0}, {0.3, 1, 0}), b = make_line({0.3, 1, 0}, {0.3, 1.3, 0});
+  // Strokes 1 and 3 draw a (3 takes it over), stroke 2 draws b; the ground
+  // truth lists the relations on the curves' first strokes, 1 and 2.
+  const std::map<StrokeId, Curve> truth{{1, a}, {2, b}, {3, a}};
+  ReplayResult r{"takeover", RecordingHeader{}, Session(Workspace{}, std::make_shared<TakeOverCorrector>(truth), nullptr), {}};
+  for (const auto& [id, curve] : truth) {
+    const Stroke s = test::sampled_stroke(id, 3, double(id), 0.1, [&](int i) { return evaluate(curve, 0.5 * i); });
+    r.steps.push_back(r.session.handle(Event{double(id) + 0.5, StrokeEvent{s}}));
+    REQUIRE(r.steps.back().error.empty());
+    r.steps.push_back(r.session.handle(Event{double(id) + 0.5, ReferenceEvent{id, "ground_truth", curve}}));
+    if (id == 2) {
+      r.steps.push_back(r.session.handle(Event{2.5, RelationEvent{"ground_truth", ConstraintKind::perpendicular, {1, 2}, {0.3, 0.0}}}));
+      r.steps.push_back(r.session.handle(Event{2.5, RelationEvent{"ground_truth", ConstraintKind::coincident_point, {1, 2}, {0.3, 0.0}}}));
+    }
+  }
+  REQUIRE(r.session.sketch().network.curves().size() == 2);
+  const CaseMetrics m = compute_metrics(r);
+  CHECK(m.values.at("gt_distance_max_m") < 1e-12);
+  CHECK(m.values.at("gt_perpendicular_recall") == 1.0);
+  CHECK(m.values.at("gt_coincident_point_recall") == 1.0);
 }

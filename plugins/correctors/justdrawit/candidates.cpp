@@ -17,12 +17,16 @@ std::vector<Candidate> gather_candidates(const Scene& scene, const Points2& s2, 
   for (std::size_t i = 0; i < scene.items.size(); ++i) {
     check_budget();  // issue 17: the per-event time budget
     const SceneItem& it = scene.items[i];
-    // Nothing behind a visible draw plane (§4.3).
+    // Nothing behind a visible draw plane (§4.3). A curve drawn on the plane
+    // is not behind it: depths within the stroke's reach d (in world units
+    // at the curve) count as on the plane, else rounding (~1e-16 m) hides
+    // the curve a multi-stroke curve's next stroke continues.
     if (ctx.draw_plane) {
+      const double on_plane = d * ctx.cam.world_per_pixel(it.centroid);
       bool behind = true;
       for (const Vec3& q : it.pts3) {
         const auto z = plane_depth(ctx.cam, *ctx.draw_plane, q);
-        if (!z || *z <= 0) {
+        if (!z || *z <= on_plane) {
           behind = false;
           break;
         }

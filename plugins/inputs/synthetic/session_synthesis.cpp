@@ -83,7 +83,7 @@ Recording synthesize_session(const SynthesisParams& p) {
   if (analytic) {
     strokes = with_guidelines(plan, camera);
   } else if (p.style == DrawingStyle::justdrawit) {
-    strokes = justdrawit_strokes(plan);
+    strokes = justdrawit_strokes(plan, p.draw_planes ? std::optional<Vec3>(eye_position(camera)) : std::nullopt);
   } else {
     for (std::size_t i = 0; i < plan.curves.size(); ++i)
       strokes.push_back({plan.curves[i].curve, plan.curves[i].layer, i});
@@ -101,6 +101,7 @@ Recording synthesize_session(const SynthesisParams& p) {
       {"ground_truth", "track ground_truth: intended curves (workspace metres) and relations"},
   };
   if (p.style != DrawingStyle::plain) rec.header.source["style"] = analytic ? "analytic" : "justdrawit";
+  if (p.style == DrawingStyle::justdrawit && !p.draw_planes) rec.header.source["draw_planes"] = "false";
   const View head = vr_head_view();
   const View second = second_tablet_view(plan);
   const Vec4 view_plane =
@@ -127,9 +128,12 @@ Recording synthesize_session(const SynthesisParams& p) {
       s.samples = synthesize_tablet_stroke(planned.curve, v, noise, motion, time, rng);
       s.view = v;
       s.samples_are_pixels = true;
-      // The view plane through the model centre, the desktop viewer's default
-      // draw plane: world-space correctors get the stroke lifted onto it.
-      s.draw_plane = planned.view == 0 ? view_plane : plane_through(model_center, (eye_position(v) - model_center).normalized());
+      // The plane placed for the stroke, else the view plane through the model
+      // centre (the desktop viewer's default draw plane): world-space
+      // correctors get the stroke lifted onto it.
+      s.draw_plane = planned.draw_plane    ? *planned.draw_plane
+                     : planned.view == 0 ? view_plane
+                                         : plane_through(model_center, (eye_position(v) - model_center).normalized());
     }
     const double end = s.samples.back().time;
     rec.events.push_back({end, StrokeEvent{std::move(s)}});

@@ -28,6 +28,7 @@ struct SynthesisParams {
   std::uint64_t seed = 1;
   Modality modality = Modality::vr;
   DrawingStyle style = DrawingStyle::plain;
+  bool draw_planes = true;     // style justdrawit: strokes on placed draw planes
   double noise = 1.0;          // global scale of every error magnitude
   NoiseModel vr_noise{0.0005, 0.004, 0.15, 2.0, 0.005, 0.2, 0.015};  // metres
   MotionModel vr_motion{0.35, 90.0, 0.25};

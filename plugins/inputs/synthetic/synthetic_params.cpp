@@ -33,6 +33,9 @@ const ParamTable<SynthesisParams>& parameters() {
                   "plain: the model's curves only; analytic (tablet): construction scaffold, ground-plane "
                   "first stroke, guidelines toward the vanishing points and ticks, as in analytic drawing; "
                   "justdrawit (tablet): multi-stroke curves, then every curve oversketched from a second view")
+          .boolean("draw_planes", &S::draw_planes,
+                   "style=justdrawit: each curve drawn on the draw plane placed for it (its own plane; a line's "
+                   "plane facing the eye), as JustDrawIt's users give curves depth (§5.1); false: on the view plane")
           .real("noise", &S::noise, 0.0, 10.0, "", "global scale of every error magnitude below (0: perfect strokes)")
           .real("vr_jitter", nested_field(&S::vr_noise, &N::jitter), 0.0, 0.1, "m", "per-sample Gaussian noise, std per axis (tracking + tremor)")
           .real("vr_wobble", nested_field(&S::vr_noise, &N::wobble), 0.0, 0.1, "m", "RMS low-frequency lateral deviation across the view ray")

@@ -6,43 +6,19 @@
 // reached (README "Tablet sessions") with a small margin, so a regression
 // fails.
 #include <catch2/catch.hpp>
-#include <fstream>
 #include <map>
-#include <nlohmann/json.hpp>
 
-#include "cli_helpers.hpp"
-#include "sketchlab/io/text_file.hpp"
-#include "test_paths.hpp"
+#include "tablet_experiment.hpp"
 
 namespace fs = std::filesystem;
 using namespace sketchlab;
+using test::metric;
 
 namespace {
 
-// metrics.json cases of `recordings` through the freehand and analytic stacks.
 std::map<std::pair<std::string, std::string>, nlohmann::json> run_tablet(const std::string& name,
                                                                          const std::vector<fs::path>& recordings) {
-  const fs::path dir = test::fresh_dir(name);
-  const fs::path exp = dir / "exp.yaml";
-  std::ofstream out(exp);
-  out << "experiment: " << name << "\nrecordings:\n";
-  for (const auto& r : recordings) out << "  - " << r.string() << "\n";
-  out << "stacks:\n  - {name: freehand, corrector: {plugin: freehand}}\n"
-      << "  - {name: analytic, corrector: {plugin: analytic}}\n"
-      << "outputs: {dir: " << (dir / "runs").string()
-      << ", timestamp: false, report: true, ply: false, obj: false, mlp: false, pictures: false}\n";
-  out.close();
-  REQUIRE(test::run_cli("run " + exp.string(), dir / "run.txt") == 0);
-  const auto j = nlohmann::json::parse(read_text_file(dir / "runs" / name / "metrics.json"));
-  std::map<std::pair<std::string, std::string>, nlohmann::json> cases;
-  for (const auto& c : j["cases"]) cases[{c["recording"].get<std::string>(), c["stack"].get<std::string>()}] = c["metrics"];
-  return cases;
-}
-
-double get(const nlohmann::json& m, const std::string& key) {
-  INFO(key);
-  REQUIRE(m.contains(key));
-  return m[key].get<double>();
+  return test::run_tablet_experiment(name, recordings, {"freehand", "analytic"});
 }
 
 struct Figures {
@@ -69,17 +45,17 @@ TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet s
     INFO(name);
     const auto& a = cases.at({name, "analytic"});
     const auto& freehand = cases.at({name, "freehand"});
-    const double aligned = get(a, "gt_distance_mean_aligned_eye_scale_m");
+    const double aligned = metric(a, "gt_distance_mean_aligned_eye_scale_m");
     CHECK(aligned < f.aligned_max);
-    CHECK(get(a, "gt_parallel_recall") >= f.parallel_min);
-    CHECK(get(a, "gt_perpendicular_recall") >= f.perpendicular_min);
-    CHECK(get(a, "gt_coincident_point_recall") >= f.coincident_min);
+    CHECK(metric(a, "gt_parallel_recall") >= f.parallel_min);
+    CHECK(metric(a, "gt_perpendicular_recall") >= f.perpendicular_min);
+    CHECK(metric(a, "gt_coincident_point_recall") >= f.coincident_min);
     // Nodes where the inferred curves meet (the baseline has none).
-    CHECK(get(a, "nodes") > 0);
-    CHECK(get(a, "dangling_endpoint_ratio") <= f.dangling_max);
-    CHECK(get(freehand, "dangling_endpoint_ratio") == 1.0);
+    CHECK(metric(a, "nodes") > 0);
+    CHECK(metric(a, "dangling_endpoint_ratio") <= f.dangling_max);
+    CHECK(metric(freehand, "dangling_endpoint_ratio") == 1.0);
     WARN(name << ": analytic aligned " << aligned << " m, freehand aligned "
-              << get(freehand, "gt_distance_mean_aligned_eye_scale_m") << " m");
+              << metric(freehand, "gt_distance_mean_aligned_eye_scale_m") << " m");
   }
 }
 
@@ -97,9 +73,9 @@ TEST_CASE("analytic is exact on noise-free analytic-style sessions of boxes and 
     INFO(model);
     const auto& a = cases.at({model, "analytic"});
     // The mug's handle has no tangent scaffold: close, not exact.
-    if (model == "mug") CHECK(get(a, "gt_distance_mean_aligned_eye_scale_m") < 2e-4);
-    else CHECK(get(a, "gt_distance_max_aligned_eye_scale_m") < 1e-9);
+    if (model == "mug") CHECK(metric(a, "gt_distance_mean_aligned_eye_scale_m") < 2e-4);
+    else CHECK(metric(a, "gt_distance_max_aligned_eye_scale_m") < 1e-9);
     for (const char* kind : {"parallel", "perpendicular", "coincident_point"})
-      CHECK(get(a, std::string("gt_") + kind + "_recall") == 1.0);
+      CHECK(metric(a, std::string("gt_") + kind + "_recall") == 1.0);
   }
 }

@@ -32,7 +32,7 @@ TEST_CASE("ShortStraw finds the corners of a zig-zag", "[justdrawit][shortstraw]
   CHECK(short_straw(line2({0, 0}, {300, 10})).index.size() == 2);
 }
 
-TEST_CASE("Fold-overs are found and unfolded; corners are not fold-overs", "[justdrawit][scratch]") {
+TEST_CASE("Fold-overs are found and unfolded, corners are not fold-overs", "[justdrawit][scratch]") {
   // Three passes back and forth along y = 0, 4 px apart.
   const Points2 s = cat(cat(line2({0, 0}, {300, 2}), line2({300, 2}, {10, 6})), line2({10, 6}, {310, 4}));
   const auto sections = fold_over_sections(resample(s, 1.5), d);

@@ -72,7 +72,7 @@ TEST_CASE("Figure 2: overlapping, skipping and scratched strokes build one curve
   for (const Vec2& p : px) CHECK(std::abs(p.y() - 500) < 15);
 }
 
-TEST_CASE("Extend by overlap and by join; not on perpendicular or distant strokes", "[justdrawit][extend]") {
+TEST_CASE("Extend by overlap and by join, not on perpendicular or distant strokes", "[justdrawit][extend]") {
   SECTION("extend (merge with overhang)") {
     Drawer dr;
     dr.draw(front, line_px({200, 500}, {500, 500}));
@@ -128,7 +128,7 @@ TEST_CASE("Extend by overlap and by join; not on perpendicular or distant stroke
   }
 }
 
-TEST_CASE("Close: extend-and-close and a new closed stroke; not when open", "[justdrawit][close]") {
+TEST_CASE("Close: extend-and-close and a new closed stroke, not when open", "[justdrawit][close]") {
   SECTION("extend and close") {
     Drawer dr;
     std::vector<Vec2> u = line_px({300, 300}, {300, 600});
@@ -326,4 +326,19 @@ TEST_CASE("Bad input gives a clear error, never a crash", "[justdrawit][errors]"
   const Correction c = justdrawit_correct(two, sketch, p);
   CHECK(c.error.empty());
   CHECK(c.edit.curves_added.size() == 1);
+}
+
+TEST_CASE("A curve on the visible draw plane is not behind it, one farther than d is", "[justdrawit][extend]") {
+  // §4.3 rules out curves behind a visible draw plane. The first stroke lies
+  // on z = 0; the second, on a plane `offset` nearer the eye, continues it.
+  // Within d (15 px = 15 mm here) the curve counts as on the plane.
+  const auto second = [](double offset) {
+    Drawer dr;
+    dr.draw(front, line_px({200, 500}, {500, 500}), Layer::automatic, Vec4(0, 0, 1, 0));
+    const StepReport r = dr.draw(front, line_px({470, 500}, {700, 500}), Layer::automatic, Vec4(0, 0, 1, offset));
+    return std::make_pair(decision(r), dr.net().curves().size());
+  };
+  CHECK(second(0.0) == std::make_pair(extend, std::size_t(1)));
+  CHECK(second(0.005) == std::make_pair(extend, std::size_t(1)));
+  CHECK(second(0.05) == std::make_pair(new_curve, std::size_t(2)));
 }

@@ -6,6 +6,7 @@
 #include "multi_view.hpp"
 #include "relations.hpp"
 #include "sketchlab/geometry/bezier.hpp"
+#include "sketchlab/draw_plane.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "synthetic_test_support.hpp"
 
@@ -37,4 +38,49 @@ TEST_CASE("a JustDrawIt session draws each curve in two strokes, then oversketch
   CHECK(rec.header.source.at("style") == "justdrawit");
   p.modality = Modality::vr;
   CHECK_THROWS_WITH(synthesize_session(p), Catch::Contains("modality=tablet"));
+}
+
+TEST_CASE("a JustDrawIt session draws each curve on the draw plane placed for it", "[synthetic][multi_view]") {
+  for (const std::string model : {"cube", "mug", "chair", "lamp"}) {
+    INFO(model);
+    SynthesisParams p = support::perfect(model, Modality::tablet);
+    p.style = DrawingStyle::justdrawit;
+    const Recording rec = synthesize_session(p);
+    const Vec3 eye = eye_position(*support::drawn(rec).front().stroke.view);
+    for (const auto& d : support::drawn(rec)) {
+      INFO("stroke " << d.stroke.id);
+      REQUIRE(d.stroke.draw_plane);
+      const Vec4& plane = *d.stroke.draw_plane;
+      const Vec3 n = plane.head<3>();
+      // The plane holds the whole intended curve (a planar curve's own plane).
+      for (const Vec3& q : d.truth.control_points) CHECK(std::abs(n.dot(q) - plane[3]) < 1e-12);
+      if (d.truth.kind == CurveKind::line) {
+        // A line's plane is the one through it that faces the first eye best
+        // (kept for the oversketch from the second view).
+        const Vec3 a = d.truth.control_points.front(), dir = (d.truth.control_points.back() - a).normalized();
+        Vec3 facing = eye - a;
+        facing -= facing.dot(dir) * dir;
+        CHECK(n.dot(facing.normalized()) > 1 - 1e-12);
+      }
+      // Noise-free pixels lifted onto the plane lie on the intended curve.
+      std::string error;
+      const Stroke lifted = lift_to_draw_plane(d.stroke, error);
+      REQUIRE(error.empty());
+      for (const Sample& s : lifted.samples) CHECK(closest_point(d.truth, s.position).distance < 1e-9);
+    }
+  }
+  SynthesisParams p = support::perfect("cube", Modality::tablet);
+  p.style = DrawingStyle::justdrawit;
+  p.draw_planes = false;
+  const Recording rec = synthesize_session(p);
+  const auto drawn = support::drawn(rec);
+  CHECK(*drawn.front().stroke.draw_plane == *drawn[1].stroke.draw_plane);  // the view plane through the model
+  CHECK(rec.header.source.at("draw_planes") == "false");
+}
+
+TEST_CASE("a JustDrawIt draw plane is refused for a curve that is not planar", "[synthetic][multi_view]") {
+  Curve twisted;
+  twisted.control_points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1, 1, 1)};
+  CHECK_THROWS_WITH(placed_draw_plane(twisted, Vec3(5, 5, 5)), Catch::Contains("planar"));
+  CHECK_THROWS_WITH(placed_draw_plane(make_line(Vec3(0, 0, 0), Vec3(1, 0, 0)), Vec3(3, 0, 0)), Catch::Contains("end-on"));
 }

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# The tablet experiment (configs/tablet.yaml's stacks: freehand, analytic,
+# justdrawit) over several seeds and noise levels: synthesises every
+# MODEL x STYLE x SEED x NOISE session with `sketchlab synth` into
+# OUT/sessions, runs the experiment on them into OUT/runs, and prints one
+# line per (model, style, noise, stack): the median over the seeds of the
+# ground-truth figures of metrics.csv (aligned: gt_distance_mean_aligned_eye_scale_m,
+# written for one-view sessions, and raw: gt_distance_mean_m, in mm;
+# parallel/perpendicular/coincident recalls; dangling endpoint ratio).
+#
+#   scripts/tablet-sweep.sh OUT
+#   MODELS="cube lamp" SEEDS="1 2" NOISES="0 1" STYLES=analytic scripts/tablet-sweep.sh OUT
+#
+# Needs build/bin/sketchlab (scripts/build.sh sketchlab_cli).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+[ $# -eq 1 ] || { echo "usage: $0 OUT_DIR" >&2; exit 2; }
+out=$1
+bin="$root/build/bin/sketchlab"
+models=${MODELS:-cube mug chair lamp}
+seeds=${SEEDS:-1 2 3}
+noises=${NOISES:-0 0.5 1 2}
+styles=${STYLES:-analytic justdrawit}
+mkdir -p "$out/sessions"
+out=$(cd "$out" && pwd)
+for model in $models; do
+  for style in $styles; do
+    for seed in $seeds; do
+      for noise in $noises; do
+        "$bin" synth "$model" --modality tablet --param "style=$style" --seed "$seed" --noise "$noise" \
+          --overwrite -o "$out/sessions/${model}_${style}_n${noise}_s${seed}.jsonl" >/dev/null
+      done
+    done
+  done
+done
+cat >"$out/sweep.yaml" <<EOF
+experiment: tablet-sweep
+recordings: [sessions/*.jsonl]
+stacks:
+  - {name: freehand, corrector: {plugin: freehand}}
+  - {name: analytic, corrector: {plugin: analytic}}
+  - {name: justdrawit, corrector: {plugin: justdrawit}}
+outputs: {dir: $out/runs, timestamp: false, report: true, sketch_json: false, stroke_csv: false, ply: false, obj: false, mlp: false, pictures: false}
+EOF
+rm -rf "$out/runs/tablet-sweep"
+"$bin" run "$out/sweep.yaml" --no-timings >/dev/null 2>&1
+# metrics.csv: recording,stack,<sweep values>,ok,error,wall_ms,<metrics...>
+awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_parallel_recall gt_perpendicular_recall gt_coincident_point_recall dangling_endpoint_ratio" '
+  function median(list,   n, a, i, j, t) {
+    n = split(list, a, " ")
+    for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (a[j] + 0 < a[i] + 0) { t = a[i]; a[i] = a[j]; a[j] = t }
+    return n == 0 ? "-" : (n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2)
+  }
+  NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; nk = split(keys, k, " "); next }
+  {
+    split($col["recording"], r, "_")
+    group = r[1] " " r[2] " " substr(r[3], 2) " " $col["stack"]
+    if (!(group in seen)) { seen[group] = 1; order[++ng] = group }
+    for (i = 1; i <= nk; ++i) if ((k[i] in col) && $col[k[i]] != "") v[group, i] = v[group, i] " " $col[k[i]]
+  }
+  END {
+    for (g = 1; g <= ng; ++g) {
+      printf "%s", order[g]
+      for (i = 1; i <= nk; ++i) {
+        x = median(v[order[g], i])
+        if (x == "-") printf " -"
+        else if (i <= 2) printf " %.1f", 1000 * x
+        else printf " %.2f", x
+      }
+      printf "\n"
+    }
+  }' "$out/runs/tablet-sweep/metrics.csv" | sort -k1,1 -k2,2 -k4,4 -k3,3n |
+  { echo "model style noise stack aligned_mm raw_mm parallel perpendicular coincident dangling"; cat; } | column -t
