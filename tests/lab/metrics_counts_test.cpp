@@ -61,7 +61,7 @@ TEST_CASE("metrics: latency percentiles over the corrected strokes only", "[lab]
   CHECK(m.values.at("curves") == 2);  // the third stroke was undone
 }
 
-TEST_CASE("metrics: a reference track equal to the output agrees fully; a shifted one by its shift",
+TEST_CASE("metrics: a reference track equal to the output agrees fully, a shifted one by its shift",
           "[lab][metrics]") {
   for (const double shift : {0.0, 0.01}) {
     ReplayResult r = two_lines();

@@ -55,7 +55,7 @@ RunSummary two_cases(const fs::path& run_dir, ExperimentConfig& config) {
 
 }  // namespace
 
-TEST_CASE("report: metrics.csv puts the headline metrics first, then the rest by name; empty where absent",
+TEST_CASE("report: metrics.csv puts the headline metrics first, then the rest by name, empty where absent",
           "[lab][report]") {
   const fs::path dir = fresh_dir("csv");
   ExperimentConfig config;

@@ -69,7 +69,7 @@ TEST_CASE("sketch JSON: patch faces must name vertices of their mesh", "[io][ske
   CHECK_THAT(error_parsing(patch("[[0,1,1e10]]")), Catch::Contains("expected an integer in [-2147483648, 2147483647]"));
 }
 
-TEST_CASE("sketch JSON: patch meshes keep their vertex normals; files without them still read",
+TEST_CASE("sketch JSON: patch meshes keep their vertex normals, files without them still read",
           "[io][sketch_json]") {
   Sketch sketch;
   Edit edit;
@@ -120,7 +120,7 @@ TEST_CASE("sketch JSON: what sketch_to_json writes reads back", "[io][sketch_jso
   CHECK(sketch_to_json(back) == text);
 }
 
-TEST_CASE("sketch JSON: nodes, workspace, raw stroke ids and each stroke's constraints; equal sketches, equal bytes",
+TEST_CASE("sketch JSON: nodes, workspace, raw stroke ids and each stroke's constraints, equal sketches, equal bytes",
           "[io][sketch_json]") {
   Sketch sketch;
   sketch.workspace.grid_enabled = true;

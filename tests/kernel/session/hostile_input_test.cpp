@@ -82,7 +82,7 @@ TEST_CASE("a surfacer that overruns keeps the stroke's curve and reports the sur
   CHECK(session.sketch().network.curves().size() == 1);
 }
 
-TEST_CASE("BudgetScope: nested scopes restore the outer budget; none means no limit", "[session][budget]") {
+TEST_CASE("BudgetScope: nested scopes restore the outer budget, none means no limit", "[session][budget]") {
   CHECK(budget_left() == std::numeric_limits<double>::infinity());
   CHECK_NOTHROW(check_budget());
   {

@@ -55,7 +55,7 @@ TEST_CASE("Item 6: the brush fires once per entry into a curve's tube, at its cl
   CHECK(st.brush_queries == 50);
 }
 
-TEST_CASE("Item 6: re-entering re-sends; nothing is queried at the very end", "[cassie][detection]") {
+TEST_CASE("Item 6: re-entering re-sends, nothing is queried at the very end", "[cassie][detection]") {
   Sketch sketch;
   add_curve(sketch, make_line({0.0, -0.2, 0.0}, {0.0, 0.2, 0.0}));
   // A zig-zag crossing x = 0 twice, 1 cm above the line.

@@ -338,7 +338,8 @@ TEST_CASE("A curve on the visible draw plane is not behind it, one farther than 
     const StepReport r = dr.draw(front, line_px({470, 500}, {700, 500}), Layer::automatic, Vec4(0, 0, 1, offset));
     return std::make_pair(decision(r), dr.net().curves().size());
   };
-  CHECK(second(0.0) == std::make_pair(extend, std::size_t(1)));
-  CHECK(second(0.005) == std::make_pair(extend, std::size_t(1)));
-  CHECK(second(0.05) == std::make_pair(new_curve, std::size_t(2)));
+  using Outcome = std::pair<std::optional<Decision>, std::size_t>;
+  CHECK(second(0.0) == Outcome{extend, 1});
+  CHECK(second(0.005) == Outcome{extend, 1});
+  CHECK(second(0.05) == Outcome{new_curve, 2});
 }

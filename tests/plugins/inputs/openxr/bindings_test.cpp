@@ -37,7 +37,7 @@ TEST_CASE("every profile binds drawing and both hand poses, each input path once
   }
 }
 
-TEST_CASE("Touch gets the configured buttons; other profiles fall back to what they have", "[openxr]") {
+TEST_CASE("Touch gets the configured buttons, other profiles fall back to what they have", "[openxr]") {
   const auto all = suggested_bindings(InputSettings{});
   const auto& touch = profile(all, "oculus/touch_controller");
   CHECK(has(touch, "draw", "/user/hand/right/input/trigger/value"));
@@ -60,7 +60,7 @@ TEST_CASE("Touch gets the configured buttons; other profiles fall back to what t
   CHECK(has(index, "undo", "/user/hand/left/input/a/click"));
 }
 
-TEST_CASE("buttons are parameters; malformed names are refused with the allowed list", "[openxr]") {
+TEST_CASE("buttons are parameters, malformed names are refused with the allowed list", "[openxr]") {
   const auto specs = input_param_specs();
   std::map<std::string, sketchlab::ParamValue> given{{"undo_button", std::string("right/thumbstick")},
                                                      {"add_patch_button", std::string("left/thumbstick")}};

@@ -112,7 +112,7 @@ TEST_CASE("one-hand grab moves the workspace rigidly with the hand", "[openxr]")
   CHECK(g.placement().scale == 1.0);
 }
 
-TEST_CASE("buttons fire once per press; delete radius scales with zoom", "[openxr]") {
+TEST_CASE("buttons fire once per press, delete radius scales with zoom", "[openxr]") {
   Workspace ws;
   ws.scale = 2.0;
   GestureInterpreter g(InputSettings{}, ws);

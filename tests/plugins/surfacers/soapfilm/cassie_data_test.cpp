@@ -104,7 +104,7 @@ TEST_CASE("malformed CASSIE graphs fail naming the file and the element", "[soap
              Catch::Contains("stroke 1: segment 2: needs 2 nodes"));
 }
 
-TEST_CASE("CASSIE sessions: curves, times, patch log; the flower quirk is a warning", "[soapfilm]") {
+TEST_CASE("CASSIE sessions: curves, times, patch log, the flower quirk is a warning", "[soapfilm]") {
   const auto flower = soapfilm::load_cassie_session(test::source_path("data/cassie"), "flower");
   CHECK(flower.system == 2);
   CHECK(flower.strokes.size() == 131);
