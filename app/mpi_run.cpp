@@ -442,7 +442,7 @@ std::optional<RunSummary> run_over_mpi(const ExperimentConfig& config, const Plu
     std::string message = "sketchlab: the job was ended before every case had run; the finished ones are in " +
                           run_dir + ": `sketchlab run --resume " + run_dir +
                           "` runs the others (a rank that dies ends an MPI job unless it was started with "
-                          "`mpirun --enable-recovery` or `srun --no-kill`)\n";
+                          "`mpirun --enable-recovery` or `srun -K0 --no-kill`)\n";
     terminated_message = &message;
     std::signal(SIGTERM, on_terminate);
     summary = coordinate(std::move(*plan), size, host, options, mpi, progress, lost, start);

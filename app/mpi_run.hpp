@@ -15,7 +15,7 @@
 // A rank that dies (a crashing case, a lost host) is reported by host and
 // rank, and the cases it was running are reported as lost; the others
 // finish. That needs the launcher to let the job go on (`mpirun
-// --enable-recovery`, `srun --no-kill`); OpenMPI 4.1 has no failure
+// --enable-recovery`, `srun -K0 --no-kill`); OpenMPI 4.1 has no failure
 // notification (no ULFM), so rank 0 notices a death by the rank's process
 // being gone (same host) or by its silence: ranks send a heartbeat every
 // second, and one silent for `rank_timeout_s` counts as dead. When the

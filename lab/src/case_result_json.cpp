@@ -64,7 +64,8 @@ void case_result_from_json(std::string_view text, const std::string& name, CaseR
   r.stroke_latency_ms.clear();
   for (const auto& v : field("stroke_latency_ms", &nlohmann::json::is_array))
     r.stroke_latency_ms.push_back(number_of(v, name, "stroke_latency_ms"));
-  r.wall_ms = number_of(root.contains("wall_ms") ? root["wall_ms"] : nlohmann::json(), name, "wall_ms");
+  if (!root.contains("wall_ms")) throw std::runtime_error(name + ": wall_ms: missing");
+  r.wall_ms = number_of(root["wall_ms"], name, "wall_ms");
 }
 
 }  // namespace sketchlab

@@ -49,7 +49,7 @@ TEST_CASE("mpirun -n 1, 2, 3 writes the single-process run's bytes", "[app][mpi]
   }
 }
 
-TEST_CASE("a case that crashes its rank is reported with the rank's name; the other cases finish", "[app][mpi]") {
+TEST_CASE("a case that crashes its rank is reported with the rank's name and the other cases finish", "[app][mpi]") {
   const fs::path base = test::fresh_dir("mpi_crash");
   test::write_crash_sweep(base);
   // --enable-recovery: the job goes on when a rank dies (mpi_run.hpp).

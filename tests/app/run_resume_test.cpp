@@ -13,7 +13,7 @@
 namespace fs = std::filesystem;
 using namespace sketchlab;
 
-TEST_CASE("--resume runs only the cases without a result and completes the run byte for byte", "[app][resume]") {
+TEST_CASE("run --resume runs only the cases without a result and completes the run byte for byte", "[app][resume]") {
   const fs::path base = test::fresh_dir("run_resume");
   const fs::path experiment = test::write_crash_sweep(base);
   const std::string env = "SKETCHLAB_PLUGIN_PATH=" + test::crash_plugin_dir() + " ";
@@ -49,7 +49,7 @@ TEST_CASE("--resume runs only the cases without a result and completes the run b
   CHECK(test::differing_files(base / "reference/runs/sweep", run).empty());
 }
 
-TEST_CASE("--resume refuses a run folder made from another experiment", "[app][resume]") {
+TEST_CASE("run --resume refuses a run folder made from another experiment", "[app][resume]") {
   const fs::path base = test::fresh_dir("run_resume_other");
   const fs::path experiment = test::write_crash_sweep(base);
   const std::string env = "cd " + base.string() + " && SKETCHLAB_PLUGIN_PATH=" + test::crash_plugin_dir() + " " +
