@@ -41,8 +41,9 @@ measure() {  # label, folder, command...
   local label=$1 name=$2 dir="$work/$2"
   shift 2
   mkdir -p "$dir"
-  /usr/bin/time -f "%e %U %S" -o "$dir/time.txt" bash -c 'cd "$0" && shift && "$@" >log.txt 2>&1' "$dir" "$@"
-  read -r wall user sys <"$dir/time.txt"
+  /usr/bin/time -f "%e %U %S" -o "$dir/time.txt" bash -c 'cd "$0" && "$@" >log.txt 2>&1' "$dir" "$@" ||
+    { echo "$label: exit status $?, log:" >&2; tail -3 "$dir/log.txt" >&2; }
+  read -r wall user sys < <(tail -1 "$dir/time.txt")
   local same=identical
   [ "$name" = single ] || cmp -s "$work/single/runs/bench/metrics.csv" "$dir/runs/bench/metrics.csv" || same=DIFFERENT
   printf "%-34s wall %7.2f s   cpu %7.2f s   cases %s   metrics.csv %s\n" "$label" "$wall" \

@@ -21,8 +21,18 @@ namespace {
 // CI and this machine run as root, which mpirun refuses without these; the
 // timeout keeps a hung job from hanging the suite.
 std::string mpirun(int ranks, const std::string& flags = "") {
-  return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 300 " + std::string(SKETCHLAB_MPIEXEC) +
-         " --oversubscribe -n " + std::to_string(ranks) + " " + flags + " ";
+  std::string env = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
+#ifdef SKETCHLAB_SANITIZED
+  // Debian's OpenMPI 4.1.4 leaves ~90 kB per process at MPI_Finalize (a
+  // ten-line MPI_Init/MPI_Finalize program under ASan shows it), mostly from
+  // its MCA components, which it dlcloses before exit: LeakSanitizer reports
+  // them as "<unknown module>", which no suppression can name. The ranks are
+  // checked for memory errors and UB, not leaks (the single-process runs of
+  // the same cases are).
+  env += "LSAN_OPTIONS=detect_leaks=0 ";
+#endif
+  return env + "timeout 300 " + std::string(SKETCHLAB_MPIEXEC) + " --oversubscribe -n " + std::to_string(ranks) +
+         " " + flags + " ";
 }
 
 test::CliRun run_in(const fs::path& dir, const std::string& command) {
