@@ -190,10 +190,10 @@ class CasePool {
 // final word).
 bool run_cases(const RunPlan* plan, const std::string& cannot, const PluginHost& host, const RunOptions& options,
                int jobs) {
+  send_text(std::to_string(getpid()) + " " + processor_name(), 0, hello);
   if (!plan) {
     send_text(cannot, 0, cannot_run);
   } else {
-    send_text(std::to_string(getpid()) + " " + processor_name(), 0, hello);
     CasePool pool(*plan, host, options, jobs);
     int requested = 0, running = 0;
     bool no_more = false;
