@@ -41,6 +41,10 @@ enum Tag : int {
 };
 
 constexpr double heartbeat_s = 1.0;
+// A rank says hello once it has planned the run (loaded the experiment,
+// hashed the recordings), which may take a while on a busy file system; till
+// then it gets at least this long.
+constexpr double startup_s = 120.0;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -363,8 +367,10 @@ RunSummary coordinate(RunPlan plan, int size, const PluginHost& host, const RunO
         if (s.state >= RankState::finished) continue;
         if (s.checkable && ::kill(s.pid, 0) != 0 && errno == ESRCH)
           lose(r, "died (its process " + std::to_string(s.pid) + " is gone)");
-        else if (seconds_since(s.heard) > mpi.rank_timeout_s)
-          lose(r, "died (silent for " + std::to_string(static_cast<int>(mpi.rank_timeout_s)) + " s)");
+        else if (const double limit = s.state == RankState::starting ? std::max(mpi.rank_timeout_s, startup_s)
+                                                                       : mpi.rank_timeout_s;
+                 seconds_since(s.heard) > limit)
+          lose(r, "died (silent for " + std::to_string(static_cast<int>(limit)) + " s)");
       }
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));

@@ -17,8 +17,9 @@
 // finish. That needs the launcher to let the job go on (`mpirun
 // --enable-recovery`, `srun -K0 --no-kill`); OpenMPI 4.1 has no failure
 // notification (no ULFM), so rank 0 notices a death by the rank's process
-// being gone (same host) or by its silence: ranks send a heartbeat every
-// second, and one silent for `rank_timeout_s` counts as dead. When the
+// being gone (same host) or by its silence: each rank sends a heartbeat
+// every second once it has planned the run, and one silent for `rank_timeout_s`
+// (before its first word: at least 120 s) counts as dead. When the
 // launcher ends the whole job instead, rank 0 says which run folder to
 // --resume.
 #include "sketchlab/lab/experiment_runner.hpp"

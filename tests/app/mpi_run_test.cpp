@@ -88,6 +88,23 @@ TEST_CASE("a case that crashes its rank is reported with the rank's name and the
   CHECK(fs::exists(run / "report.html"));
 }
 
+TEST_CASE("a rank alive but silent past --rank-timeout is reported and its job still ends", "[app][mpi]") {
+  const fs::path base = test::fresh_dir("mpi_silent");
+  test::write_crash_sweep(base);
+  // The crashing case stops its rank (SIGSTOP): its process is there, so
+  // only its silence tells; the job must still end (no hang on it).
+  const auto r = run_in(base / "run", "SKETCHLAB_PLUGIN_PATH=" + test::crash_plugin_dir() + " " +
+                                          mpirun(2, "--enable-recovery -x SKETCHLAB_PLUGIN_PATH -x "
+                                                    "SKETCHLAB_FIXTURE_CRASH=stop") +
+                                          SKETCHLAB_CLI + " run --no-timings -j 1 --rank-timeout 2 ../sweep.yaml");
+  INFO(r.output);
+  CHECK(std::regex_search(r.output, std::regex("LOST rank 1 on [^ :]+: died \\(silent for 2 s\\)")));
+  CHECK(r.output.find("chair x crash: lost: rank 1") != std::string::npos);
+  const fs::path run = base / "run/runs/sweep";
+  CHECK(test::finished_cases(run) == 2);
+  CHECK(fs::exists(run / "metrics.csv"));
+}
+
 TEST_CASE("a job ended by a dying rank is finished by --resume under mpirun, byte for byte", "[app][mpi][resume]") {
   const fs::path base = test::fresh_dir("mpi_resume");
   test::write_crash_sweep(base);
