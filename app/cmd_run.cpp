@@ -13,9 +13,7 @@
 #include "progress_line.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/lab/experiment_runner.hpp"
-#ifdef SKETCHLAB_HAVE_MPI
 #include "mpi_run.hpp"
-#endif
 #ifdef SKETCHLAB_HAVE_VIEWER
 #include "sketchlab/viewer/display.hpp"
 #include "sketchlab/viewer/export_gltf.hpp"
@@ -92,10 +90,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "Finish the run in this run folder: run only its cases without a result "
                   "(case_result.json); the experiment defaults to the folder's config.yaml")
       ->check(CLI::ExistingDirectory);
+#ifdef SKETCHLAB_HAVE_MPI
   cmd->add_option("--rank-timeout", opts->rank_timeout_s,
                   "Under MPI: seconds without a word from a rank before it counts as dead (ranks on "
                   "rank 0's host are also checked directly)")
       ->check(CLI::Range(1.0, 1e6));
+#endif
   cmd->callback([opts, &exit_code] {
     std::vector<Override> overrides;
     std::string experiment = opts->experiment;
@@ -143,6 +143,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
     }
     const RunSummary& summary = *result;
 #else
+    if (launched_by_mpi())
+      std::cerr << "warning: this sketchlab was built without MPI (SKETCHLAB_WITH_MPI): each rank runs the "
+                   "whole experiment into a folder of its own\n";
     const RunSummary summary = run_experiment(config, host, options);
 #endif
     progress.finish();

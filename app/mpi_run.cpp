@@ -399,12 +399,6 @@ void end_mpi_job(const std::vector<std::string>& lost, int exit_code) {
   MPI_Abort(MPI_COMM_WORLD, exit_code);
 }
 
-bool launched_by_mpi() {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-    if (std::getenv(v)) return true;
-  return false;
-}
-
 std::optional<RunSummary> run_over_mpi(const ExperimentConfig& config, const PluginHost& host, RunOptions options,
                                        const MpiRunOptions& mpi, ProgressLine& progress,
                                        std::vector<std::string>& lost) {

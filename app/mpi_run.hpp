@@ -30,7 +30,8 @@ class ProgressLine;
 
 // True when this process was started by an MPI launcher (OpenMPI's mpirun,
 // srun with PMIx or PMI-2, MPICH's hydra), judged from its environment, so
-// that a plain `sketchlab run` never initialises MPI.
+// that a plain `sketchlab run` never initialises MPI (mpi_launcher.cpp,
+// also in builds without MPI; the rest of this header needs MPI).
 bool launched_by_mpi();
 
 struct MpiRunOptions {
