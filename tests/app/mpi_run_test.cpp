@@ -40,6 +40,17 @@ test::CliRun run_in(const fs::path& dir, const std::string& command) {
   return test::run_captured("cd " + dir.string() + " && " + command);
 }
 
+// The crash sweep (run_sweeps.hpp) in <base>/run under `ranks` ranks with
+// --enable-recovery (the job goes on when a rank dies: mpi_run.hpp), the
+// fixture corrector set to `crash` (SKETCHLAB_FIXTURE_CRASH), -j 1.
+test::CliRun run_crash_sweep(const fs::path& base, int ranks, const std::string& crash, const std::string& args) {
+  test::write_crash_sweep(base);
+  return run_in(base / "run", "SKETCHLAB_PLUGIN_PATH=" + test::crash_plugin_dir() + " " +
+                                  mpirun(ranks, "--enable-recovery -x SKETCHLAB_PLUGIN_PATH -x SKETCHLAB_FIXTURE_CRASH=" +
+                                                    crash) +
+                                  SKETCHLAB_CLI + " run --no-timings -j 1 " + args + " ../sweep.yaml");
+}
+
 }  // namespace
 
 TEST_CASE("mpirun -n 1, 2, 3 writes the single-process run's bytes", "[app][mpi]") {
@@ -61,12 +72,7 @@ TEST_CASE("mpirun -n 1, 2, 3 writes the single-process run's bytes", "[app][mpi]
 
 TEST_CASE("a case that crashes its rank is reported with the rank's name and the other cases finish", "[app][mpi]") {
   const fs::path base = test::fresh_dir("mpi_crash");
-  test::write_crash_sweep(base);
-  // --enable-recovery: the job goes on when a rank dies (mpi_run.hpp).
-  const auto r = run_in(base / "run", "SKETCHLAB_PLUGIN_PATH=" + test::crash_plugin_dir() + " " +
-                                          mpirun(3, "--enable-recovery -x SKETCHLAB_PLUGIN_PATH -x "
-                                                    "SKETCHLAB_FIXTURE_CRASH=1") +
-                                          SKETCHLAB_CLI + " run --no-timings -j 1 ../sweep.yaml");
+  const auto r = run_crash_sweep(base, 3, "1", "");
   INFO(r.output);
   // (mpirun --enable-recovery of OpenMPI 4.1 exits 0 whatever its ranks do:
   // the run's own report is what tells.)
@@ -90,13 +96,9 @@ TEST_CASE("a case that crashes its rank is reported with the rank's name and the
 
 TEST_CASE("a rank alive but silent past --rank-timeout is reported and its job still ends", "[app][mpi]") {
   const fs::path base = test::fresh_dir("mpi_silent");
-  test::write_crash_sweep(base);
   // The crashing case stops its rank (SIGSTOP): its process is there, so
   // only its silence tells; the job must still end (no hang on it).
-  const auto r = run_in(base / "run", "SKETCHLAB_PLUGIN_PATH=" + test::crash_plugin_dir() + " " +
-                                          mpirun(2, "--enable-recovery -x SKETCHLAB_PLUGIN_PATH -x "
-                                                    "SKETCHLAB_FIXTURE_CRASH=stop") +
-                                          SKETCHLAB_CLI + " run --no-timings -j 1 --rank-timeout 2 ../sweep.yaml");
+  const auto r = run_crash_sweep(base, 2, "stop", "--rank-timeout 2");
   INFO(r.output);
   CHECK(std::regex_search(r.output, std::regex("LOST rank 1 on [^ :]+: died \\(silent for 2 s\\)")));
   CHECK(r.output.find("chair x crash: lost: rank 1") != std::string::npos);
