@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "commands.hpp"
 #include "default_paths.hpp"
@@ -12,6 +13,7 @@
 #include "progress_line.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/lab/experiment_runner.hpp"
+#include "mpi_run.hpp"
 #ifdef SKETCHLAB_HAVE_VIEWER
 #include "sketchlab/viewer/display.hpp"
 #include "sketchlab/viewer/export_gltf.hpp"
@@ -26,6 +28,8 @@ struct RunCommandOptions {
   std::vector<std::string> overrides;
   bool no_timings = false;
   int jobs = 0;
+  std::string resume;
+  double rank_timeout_s = 60.0;
 };
 
 Renderer make_renderer() {
@@ -79,8 +83,19 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "stacks.0.corrector.params.delta=0.03");
   cmd->add_flag("--no-timings", opts->no_timings,
                 "Write latencies and times as 0 so repeated runs give byte-identical files");
-  cmd->add_option("-j,--jobs", opts->jobs, "Cases run in parallel (default: one per core)")
+  cmd->add_option("-j,--jobs", opts->jobs,
+                  "Cases run in parallel (per rank under MPI; default: one per core the process may use)")
       ->check(CLI::Range(0, 256));
+  cmd->add_option("--resume", opts->resume,
+                  "Finish the run in this run folder: run only its cases without a result "
+                  "(case_result.json); the experiment defaults to the folder's config.yaml")
+      ->check(CLI::ExistingDirectory);
+#ifdef SKETCHLAB_HAVE_MPI
+  cmd->add_option("--rank-timeout", opts->rank_timeout_s,
+                  "Under MPI: seconds without a word from a rank before it counts as dead (ranks on "
+                  "rank 0's host are also checked directly)")
+      ->check(CLI::Range(1.0, 1e6));
+#endif
   cmd->callback([opts, &exit_code] {
     std::vector<Override> overrides;
     std::string experiment = opts->experiment;
@@ -91,7 +106,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       experiment.clear();
     }
     for (const auto& o : opts->overrides) overrides.push_back(parse_override(o));
-    const auto path = experiment.empty() ? default_experiment() : std::filesystem::path(experiment);
+    const auto path = !experiment.empty()      ? std::filesystem::path(experiment)
+                      : !opts->resume.empty() ? std::filesystem::path(opts->resume) / "config.yaml"
+                                              : default_experiment();
     const ExperimentConfig config = load_experiment(path, overrides);
 
     PluginHost host;
@@ -114,7 +131,23 @@ void add_run_command(CLI::App& app, int& exit_code) {
     if (config.outputs.pictures && !options.pictures_unavailable.empty())
       std::cerr << "warning: no pictures: " << options.pictures_unavailable << "\n";
     options.scene_exporter = make_scene_exporter();
+    options.resume_dir = opts->resume;
+    std::vector<std::string> lost;  // ranks that died or could not run
+#ifdef SKETCHLAB_HAVE_MPI
+    std::optional<RunSummary> result;
+    if (launched_by_mpi()) {
+      result = run_over_mpi(config, host, options, {opts->rank_timeout_s}, progress, lost);
+      if (!result) return;  // not rank 0: rank 0 reports
+    } else {
+      result = run_experiment(config, host, options);
+    }
+    const RunSummary& summary = *result;
+#else
+    if (launched_by_mpi())
+      std::cerr << "warning: this sketchlab was built without MPI (SKETCHLAB_WITH_MPI): each rank runs the "
+                   "whole experiment into a folder of its own\n";
     const RunSummary summary = run_experiment(config, host, options);
+#endif
     progress.finish();
     // Pictures that failed while drawing (noted in the report too).
     for (const auto& note : summary.provenance.notes)
@@ -130,7 +163,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
     std::cout << "; results in " << summary.run_dir.string() << "\n";
     if (config.outputs.report)
       std::cout << "report: " << (summary.run_dir / "report.html").string() << "\n";
-    exit_code = summary.failed() ? 1 : 0;
+    for (const auto& l : lost) std::cerr << "LOST " << l << "\n";
+    exit_code = summary.failed() || !lost.empty() ? 1 : 0;
+#ifdef SKETCHLAB_HAVE_MPI
+    end_mpi_job(lost, exit_code);
+#endif
   });
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// A one-line progress display: cases done, the current case and an ETA.
+// A one-line progress display: cases done and failed, the current case and
+// an ETA (over every rank of a distributed run: rank 0 draws it).
 // Debian packages no C++ progress-bar library, and this needs only a
 // carriage return. On a terminal the line is redrawn in place; otherwise one
 // line is printed per finished case (logs stay readable).

@@ -17,6 +17,8 @@ packages=(
   # plugins and viewers
   libcgal-dev libopenmesh-dev libnlopt-cxx-dev libtbb-dev libnanoflann-dev
   libvtk9-dev libopenmpi-dev libopenxr-dev libxi-dev
+  # distributed runs (`mpirun -n N sketchlab run`, app/mpi_run.hpp): the launcher
+  openmpi-bin
   # headless rendering and viewer tests (xdotool drives the real window)
   xvfb xauth xdotool
   # the report's 3D views tested in a real browser (tests/app/report_browser_test.cpp);

@@ -11,7 +11,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "test_paths.hpp"
 
@@ -84,6 +87,28 @@ inline CliRun run_until_then_signal(const std::string& command, const std::files
   r.output = read_log();
   r.status = seen && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+// The files of two folder trees that differ: present in one only, or with
+// other bytes (relative paths, sorted); empty when the trees are the same.
+inline std::vector<std::string> differing_files(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const auto files = [](const std::filesystem::path& root) {
+    std::map<std::string, std::string> out;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(root))
+      if (e.is_regular_file()) {
+        std::ifstream in(e.path(), std::ios::binary);
+        out[std::filesystem::relative(e.path(), root).string()] = std::string(std::istreambuf_iterator<char>(in), {});
+      }
+    return out;
+  };
+  const auto fa = files(a), fb = files(b);
+  std::set<std::string> names;
+  for (const auto& [n, bytes] : fa) names.insert(n);
+  for (const auto& [n, bytes] : fb) names.insert(n);
+  std::vector<std::string> out;
+  for (const auto& n : names)
+    if (!fa.count(n) || !fb.count(n) || fa.at(n) != fb.at(n)) out.push_back(n);
+  return out;
 }
 
 }  // namespace sketchlab::test

@@ -21,9 +21,17 @@
 //   <recording>/<stack>/scene.gltf the case's final sketch as glTF 2.0 (when a
 //                                 scene exporter is given and the report is on;
 //                                 the report's 3D views show it)
+//   <recording>/<stack>/case_result.json  the case's record, written last
+//                                 (case_result_json.hpp): a case with one is
+//                                 finished, and --resume keeps it
 //   metrics.csv, metrics.json, report.html
+//
+// The work is split in three so that a distributed run (app/mpi_run.cpp) can
+// put the cases on other processes: plan_run, run_case for each pending
+// case (thread-safe), finish_run. run_experiment does all three with threads.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +54,9 @@ struct CaseResult {
 };
 
 struct Progress {
-  std::size_t done = 0, total = 0;
+  std::size_t done = 0, total = 0;  // done counts failed cases too
+  std::size_t failed = 0;
+  std::size_t resumed = 0;  // of `done`, finished before this run (--resume): not in the ETA
   std::string current;  // label of a case just started or finished
   double elapsed_s = 0.0;
 };
@@ -69,6 +79,11 @@ struct RunOptions {
   // report, provenance.yaml) and the renderer is not called.
   std::string pictures_unavailable;
   SceneExporter scene_exporter;  // used when outputs.report is set; may be empty
+  // Set: resume this existing run folder instead of creating one. Its cases
+  // with a case_result.json are kept as they are; the others are run. The
+  // experiment must be the one the folder was made from (its config.yaml),
+  // or be that config.yaml itself.
+  std::filesystem::path resume_dir;
 };
 
 struct RunSummary {
@@ -86,5 +101,41 @@ struct RunSummary {
 // recordings) are reported in its CaseResult.
 RunSummary run_experiment(const ExperimentConfig& config, const PluginHost& host,
                           const RunOptions& options);
+
+// A run resolved and validated, its folder made, and what is left to do.
+struct RunPlan {
+  ExperimentConfig config;
+  RunSummary summary;  // run_dir, provenance, every case (finished ones with their results)
+  std::vector<std::size_t> pending;  // indices into summary.cases still to run, in order
+  bool pictures = false;  // side_by_side.png per recording (outputs.pictures and a renderer)
+  bool scenes = false;    // scene.gltf per case (outputs.report and a scene exporter)
+};
+
+// Validates as run_experiment does, then, when `create` is true, creates the
+// run folder (or takes options.resume_dir, reading its finished cases) and
+// writes config.yaml. With `create` false it only reads what it needs:
+// `run_dir` must be the folder another process created for the same
+// experiment (ranks of a distributed run), and `pending` lists every case.
+// Throws ConfigError / std::runtime_error naming the file or folder at fault.
+RunPlan plan_run(const ExperimentConfig& config, const PluginHost& host, const RunOptions& options,
+                 bool create = true, const std::filesystem::path& run_dir = {});
+
+// Runs case `index` of `plan` and writes its files (scene.gltf included),
+// case_result.json last (written whole or not at all). Thread-safe.
+// Failures are in the result. `final_sketch`, when not null, receives what
+// the pictures show of the final sketch (when plan.pictures; else left
+// empty).
+CaseResult run_case(const RunPlan& plan, std::size_t index, const PluginHost& host,
+                    const RunOptions& options, std::optional<Sketch>* final_sketch = nullptr);
+
+// Stores `result` (from run_case, maybe on another process) as case `index`.
+void set_case_result(RunPlan& plan, std::size_t index, CaseResult result);
+
+// Once every case has its result: the MeshLab projects, the pictures
+// (`sketches[i]` of case i; for finished cases of a resumed run without one,
+// read back from their sketch.json, without raw strokes), the report and
+// provenance.yaml. Call on the main thread (the renderer uses VTK).
+RunSummary finish_run(RunPlan plan, std::vector<std::optional<Sketch>> sketches, const PluginHost& host,
+                      const RunOptions& options, double wall_s);
 
 }  // namespace sketchlab
