@@ -60,7 +60,12 @@ TEST_CASE("report in headless Chromium: every 3D view renders, nothing on the co
   CHECK(body_attribute(dom, "data-scene-views") == "2");
   CHECK(body_attribute(dom, "data-scene-nonblank") == "2");
   CHECK(body_attribute(dom, "data-scene-errors").empty());
-  // Chromium logs every console message of the page as INFO:CONSOLE.
+  // Chromium logs every console message of the page as INFO:CONSOLE. One is
+  // Chromium's own performance hint, not the page's: "GPU stall due to
+  // ReadPixels" when the non-blank check reads pixels back on a loaded
+  // machine (software GL); it says nothing about the report.
   std::istringstream lines(dom);
-  for (std::string line; std::getline(lines, line);) CHECK_THAT(line, !Catch::Contains(":CONSOLE"));
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("GPU stall due to ReadPixels") == std::string::npos)
+      CHECK_THAT(line, !Catch::Contains(":CONSOLE"));
 }
