@@ -107,14 +107,6 @@ namespace {
 
 std::string case_label(const CaseResult& c) { return c.recording.stem().string() + " x " + c.variant.stack.name; }
 
-// Writes `text` as `file` whole or not at all: a rename within one folder is
-// atomic, so a process killed mid-write leaves no half record.
-void write_file_atomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
-  write_text_file(tmp, text);
-  fs::rename(tmp, file);
-}
-
 // The case's scene.gltf (or scene.error.txt): one case at a time, since the
 // exporter's VTK objects are not thread-safe.
 void write_scene(const SceneExporter& exporter, const Sketch& sketch, const fs::path& dir) {
@@ -222,8 +214,9 @@ CaseResult run_case(const RunPlan& plan, std::size_t index, const PluginHost& ho
   }
   c.wall_ms = options.timings ? seconds_since(t0) * 1000.0 : 0.0;
   try {
-    fs::create_directories(c.dir);
-    write_file_atomically(c.dir / case_result_file, case_result_to_json(c));
+    // Whole or not at all (write_text_file renames a temporary over it): a
+    // process killed mid-write leaves no half record.
+    write_text_file(c.dir / case_result_file, case_result_to_json(c));
   } catch (const std::exception& e) {
     // Without its record the case is run again by --resume; say why.
     if (c.ok) c.error = std::string("cannot write ") + case_result_file + ": " + e.what();

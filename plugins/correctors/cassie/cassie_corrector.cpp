@@ -239,16 +239,17 @@ void project_on_patches(Context& cx, CorrectedStroke& cs) {
 Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params) {
   const auto start = std::chrono::steady_clock::now();
   Correction out;
+  const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
   Preprocessed pre;
-  try {
-    const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
-    pre = preprocess_stroke(densify_stroke(stroke, params.input_spacing_factor * params.delta / scale),
-                            params.preprocess);  // items 1–4
+  try {  // items 1–4 (the stroke copied only when densified)
+    pre = params.input_spacing_factor > 0
+              ? preprocess_stroke(densify_stroke(stroke, params.input_spacing_factor * params.delta / scale),
+                                  params.preprocess)
+              : preprocess_stroke(stroke, params.preprocess);
   } catch (const std::exception& e) {
     out.error = e.what();
     return out;
   }
-  const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
   const Workspace& ws = sketch.workspace;
   Context cx{stroke, sketch, params, thresholds(params, scale), false,
              {ConstraintRef::Kind::stroke, stroke.id, 0.0}, {}};
