@@ -56,36 +56,29 @@ std::optional<Guideline> detect_guideline(const Scaffold& s, const Camera& cam, 
   double best_angle = p.guideline_angle;
   auto test = [&](const Vec3& d3, bool image_parallel) {
     const auto vp = cam.vanishing_point(d3);
-    Vec2 dir2;
-    if (vp) {
-      dir2 = (*vp - *o2);
-    } else {
-      const auto q = cam.project(origin + 1e-3 * s.extent * d3);
-      if (!q) return;
-      dir2 = *q - *o2;
-    }
+    // The image direction of +d3 at the origin. It points toward the
+    // vanishing point only when d3 points away from the eye: taking vp − o
+    // for it stored guidelines drawn toward the eye reversed.
+    const auto q = cam.project(origin + 1e-3 * s.extent * d3);
+    if (!q) return;
+    Vec2 dir2 = *q - *o2;
     if (!(dir2.norm() > 1e-9)) return;
     dir2.normalize();
     double c = dir2.dot(sdir);
     Vec3 oriented = d3;
     if (c < 0) {
-      // Toward the vanishing point only (the stroke runs from the known
-      // point to it); at infinity both senses are the same point.
-      if (vp && on_screen(cam, *vp)) return;
       c = -c;
       oriented = -d3;
     }
+    // Toward an on-screen vanishing point only (§2.2: the stroke runs from
+    // the known point to it); toward one off screen either way.
+    if (vp && on_screen(cam, *vp) && (*vp - *o2).dot(sdir) < 0) return;
     const double angle = std::acos(std::min(1.0, c));
     if (angle > best_angle) return;
     if (!forced) {
       const bool reaches_vp = vp && on_screen(cam, *vp) && (b - *vp).norm() <= end_radius;
       const bool reaches_edge = (!vp || !on_screen(cam, *vp)) && border_distance(cam, b) <= end_radius;
       if (!reaches_vp && !reaches_edge) return;
-    }
-    // A guideline toward an on-screen vanishing point points at it.
-    if (vp && on_screen(cam, *vp)) {
-      const auto q = cam.project(origin + 1e-3 * s.extent * oriented);
-      if (q && (*q - *o2).dot(*vp - *o2) < 0) oriented = -oriented;
     }
     best_angle = angle;
     best = Guideline{origin, oriented.normalized(), image_parallel};
@@ -103,6 +96,13 @@ std::vector<TickTransfer> detect_tick(const Scaffold& s, const Camera& cam, cons
   std::vector<TickTransfer> out;
   if (stroke.points.size() < 2 || stroke.length > p.tick_length * cam.dpi()) return out;
   const Vec2 a = stroke.points.front(), b = stroke.points.back();
+  // A short stroke from one known point to another is a segment between
+  // them (§3.1, Figure 7a, b: a foreshortened edge can be shorter than a
+  // tick), not a tick-mark, which is drawn across a guideline (§2.3) with
+  // at most the one point it marks under it.
+  const auto at_a = known_points_near(s, cam, a, p.collect_factor * stroke.delta.front());
+  const auto at_b = known_points_near(s, cam, b, p.collect_factor * stroke.delta.back());
+  if (!at_a.empty() && !at_b.empty() && (at_a.front() - at_b.front()).norm() > s.tolerance) return out;
   // The guideline the tick crosses: its 2D projection separates a and b.
   int guide = -1;
   Vec2 cross = Vec2::Zero();
