@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "relations.hpp"
 #include "sketchlab/geometry/arclength.hpp"
@@ -81,6 +82,59 @@ std::vector<Vec3> joints(const Curve& c) {
   const int n = c.segment_count() + (c.closed ? 0 : 1);
   for (int k = 0; k < n; ++k) out.push_back(evaluate(c, k));
   return out;
+}
+
+// Points a construction step can name: the ends of the network's curves and
+// the crossings of its lines (a circle's centre, where its cross meets).
+std::vector<Vec3> points_of_interest(const GroundTruthNetwork& net, double tol) {
+  std::vector<Vec3> out;
+  auto add = [&](const Vec3& p) {
+    if (std::none_of(out.begin(), out.end(), [&](const Vec3& q) { return (q - p).norm() <= tol; }))
+      out.push_back(p);
+  };
+  for (const auto& gc : net.curves)
+    for (const Vec3& p : {start(gc.curve), end(gc.curve)}) add(p);
+  for (std::size_t i = 0; i < net.curves.size(); ++i)
+    for (std::size_t j = i + 1; j < net.curves.size(); ++j) {
+      const Curve &a = net.curves[i].curve, &b = net.curves[j].curve;
+      if (!is_line(a) || !is_line(b)) continue;
+      const Vec3 u = end(a) - start(a), v = end(b) - start(b), w = start(b) - start(a);
+      const Vec3 n = u.cross(v);
+      if (!(n.squaredNorm() > 1e-18 * u.squaredNorm() * v.squaredNorm()) || std::abs(w.dot(n)) > tol * n.norm())
+        continue;
+      const double s = w.cross(v).dot(n) / n.squaredNorm(), t = w.cross(u).dot(n) / n.squaredNorm();
+      if (s > -1e-12 && s < 1 + 1e-12 && t > -1e-12 && t < 1 + 1e-12) add(start(a) + s * u);
+    }
+  return out;
+}
+
+// The shortest chain of axis-aligned steps between points of interest from a
+// point `known` accepts to `target` (breadth-first): {a, ..., target}, a
+// known; {target} when it is known itself; empty when none reaches it.
+template <class Known>
+std::vector<Vec3> axis_chain(const std::vector<Vec3>& pois, const Known& known, const Vec3& target) {
+  if (known(target)) return {target};
+  std::vector<Vec3> nodes{target};
+  for (const Vec3& p : pois)
+    if ((p - target).norm() > 0) nodes.push_back(p);
+  std::vector<int> from(nodes.size(), -1);
+  std::vector<std::size_t> queue{0};
+  from[0] = 0;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t at = queue[head];
+    for (std::size_t next = 0; next < nodes.size(); ++next) {
+      if (from[next] >= 0 || axis_of(nodes[next] - nodes[at]) < 0) continue;
+      from[next] = static_cast<int>(at);
+      if (known(nodes[next])) {
+        std::vector<Vec3> chain;
+        for (std::size_t k = next; k != 0; k = static_cast<std::size_t>(from[k])) chain.push_back(nodes[k]);
+        chain.push_back(target);
+        return chain;
+      }
+      queue.push_back(next);
+    }
+  }
+  return {};
 }
 
 }  // namespace
@@ -198,28 +252,39 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net) {
   }
   if (first) take(*first);
 
-  for (Layer group : {Layer::scaffold, Layer::shape}) {
-    while (true) {
-      std::optional<std::size_t> best;
-      int best_ends = -1;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (drawn[i] || (net.curves[i].layer == Layer::scaffold) != (group == Layer::scaffold)) continue;
-        const Curve& c = net.curves[i].curve;
-        int ends = 0;
-        if (c.closed) {
-          for (const Vec3& j : joints(c)) ends += on_drawing(j);
-          ends = std::min(ends, 2);
-        } else {
-          ends = on_drawing(start(c)) + on_drawing(end(c));
-        }
-        if (!best || ends > best_ends || (ends == best_ends && length[i] > length[*best])) {
-          best = i;
-          best_ends = ends;
-        }
-      }
-      if (!best) break;
-      take(*best);
+  const std::vector<Vec3> pois = points_of_interest(net, tol);
+  // Order of preference: on what is drawn; construction (scaffold) before
+  // the model's curves; more ends on it; fewer dimension ticks to reach its
+  // start (with_guidelines places them); longer.
+  auto rank = [&](std::size_t i) {
+    const Curve& c = net.curves[i].curve;
+    int ends = 0;
+    if (c.closed) {
+      for (const Vec3& j : joints(c)) ends += on_drawing(j);
+      ends = std::min(ends, 2);
+    } else {
+      ends = on_drawing(start(c)) + on_drawing(end(c));
     }
+    // A line along no axis has no guideline to trace: it joins two points
+    // already there.
+    if (is_line(c) && axis_of(end(c) - start(c)) < 0 && ends < 2) ends = -1;
+    const std::size_t steps = ends == 0 ? axis_chain(pois, on_drawing, start(c)).size() - 1 : 0;
+    return std::make_tuple(ends > 0 ? 0 : 1, net.curves[i].layer == Layer::scaffold ? 0 : 1, -ends, steps,
+                           -length[i]);
+  };
+  while (true) {
+    std::optional<std::size_t> best;
+    decltype(rank(0)) best_rank;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (drawn[i]) continue;
+      const auto r = rank(i);
+      if (!best || r < best_rank) {
+        best = i;
+        best_rank = r;
+      }
+    }
+    if (!best) break;
+    take(*best);
   }
   return out;
 }
@@ -229,26 +294,127 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   const Vec3 eye = eye_position(camera);
   // OpenGL eye space looks along -z: the optical axis is minus the third row.
   const Vec3 forward = -camera.view.block<1, 3>(2, 0).transpose().normalized();
+  const std::vector<Vec3> pois = points_of_interest(plan, tol);
   std::vector<PlannedStroke> out;
-  // Lines drawn so far: ends, unit direction, whether it is a guideline.
+  // Lines drawn so far: ends, unit direction, whether it is a guideline (a
+  // ray from a through b, as the corrector stores it).
   struct DrawnLine {
     Vec3 a, b, d;
     bool guide;
   };
   std::vector<DrawnLine> drawn_lines;
+  // Vertices the corrector holds: ends of drawn curves and ticks.
+  std::vector<Vec3> vertices;
   auto on_line = [&](const DrawnLine& l, const Vec3& x) { return (x - l.a).cross(l.d).norm() <= tol; };
+  auto on_drawn = [&](const DrawnLine& l, const Vec3& x) {
+    const double t = (x - l.a).dot(l.d);
+    return on_line(l, x) && t >= -tol && (l.guide || t <= (l.b - l.a).norm() + tol);
+  };
   auto covered = [&](const Vec3& p, const Vec3& d) {
     return std::any_of(drawn_lines.begin(), drawn_lines.end(),
                        [&](const DrawnLine& l) { return l.d.cross(d).norm() <= 1e-9 && on_line(l, p); });
   };
+  // A known point (§2.2, Fig. 7a, b): a vertex, or where two drawn lines meet.
+  auto known = [&](const Vec3& p) {
+    if (std::any_of(vertices.begin(), vertices.end(), [&](const Vec3& v) { return (v - p).norm() <= tol; }))
+      return true;
+    for (std::size_t i = 0; i < drawn_lines.size(); ++i)
+      for (std::size_t j = i + 1; j < drawn_lines.size(); ++j)
+        if (drawn_lines[i].d.cross(drawn_lines[j].d).norm() > 1e-9 && on_drawn(drawn_lines[i], p) &&
+            on_drawn(drawn_lines[j], p))
+          return true;
+    return false;
+  };
   // A guideline from `from` along ±d (the sense toward the vanishing point).
   auto guideline = [&](const Vec3& from, Vec3 d, double length) {
-    drawn_lines.push_back({from, from + length * d, d, true});
     if (d.dot(forward) < 0) d = -d;
+    drawn_lines.push_back({from, from + length * d, d, true});
     out.push_back({make_line(from, from + 1.25 * length * d), Layer::guide, std::nullopt});
+  };
+  // A guideline through `from` that reaches `to`: one already drawn, else
+  // one drawn from `from` toward `to` (every vanishing point of the tablet
+  // view is off screen, where §2.2 takes either sense).
+  auto guideline_to = [&](const Vec3& from, const Vec3& to) -> const DrawnLine& {
+    const Vec3 d = (to - from).normalized();
+    for (const DrawnLine& l : drawn_lines)
+      if (l.guide && l.d.cross(d).norm() <= 1e-9 && on_drawn(l, from) && on_drawn(l, to)) return l;
+    drawn_lines.push_back({from, to, d, true});
+    out.push_back({make_line(from, from + 1.25 * (to - from)), Layer::guide, std::nullopt});
+    return drawn_lines.back();
+  };
+  // A 24 px tick mark across the line l at x (§2.3). The corrector locates
+  // it on the guideline and transfers |x − y| to every other guideline
+  // crossing this one at y, both ways (Fig. 6): those points become known
+  // too.
+  auto tick = [&](const DrawnLine& l, const Vec3& x) {
+    const Vec3 across = l.d.cross(x - eye).normalized();
+    const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (camera.projection(1, 1) * camera.viewport[3]);
+    out.push_back({make_line(x - half * across, x + half * across), Layer::scaffold, std::nullopt});
+    if (!l.guide) return;
+    vertices.push_back(x);
+    for (const DrawnLine& o : drawn_lines) {
+      if (!o.guide || o.d.cross(l.d).norm() <= 1e-9) continue;
+      const Vec3 n = l.d.cross(o.d);
+      if (std::abs((o.a - l.a).dot(n)) > tol * n.norm()) continue;
+      const Vec3 y = o.a + ((l.a - o.a).cross(l.d).dot(n) / n.squaredNorm()) * o.d;
+      const double A = (x - y).norm();
+      if (A > tol) vertices.insert(vertices.end(), {y + A * o.d, y - A * o.d});
+    }
+  };
+  // Makes p a known point by the fewest ticks (§2.3), unless it lies on a
+  // drawn line: along a chain of
+  // axis-aligned steps between points of interest from a known point, each
+  // step a guideline and a tick at its far end. When the step's point
+  // mirrored through its start is a point of interest too (a square's side
+  // about its midpoint, a circle's joints about its centre), the dimension is
+  // transferred as in Figure 6: a guideline through the start along another
+  // axis first, the tick at the same distance on it, which puts ticks at both.
+  auto make_known = [&](const Vec3& p) {
+    // A point on a drawn line is the nearest point on it already (Fig. 7d).
+    if (std::any_of(drawn_lines.begin(), drawn_lines.end(), [&](const DrawnLine& l) { return !l.guide && on_drawn(l, p); }))
+      return;
+    const std::vector<Vec3> chain = axis_chain(pois, known, p);
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+      const Vec3 a = chain[k], b = chain[k + 1];
+      if (known(b)) continue;
+      const Vec3 d = (b - a).normalized();
+      const double A = (b - a).norm();
+      const DrawnLine along = guideline_to(a, b);
+      auto is_poi = [&](const Vec3& x) {
+        return std::any_of(pois.begin(), pois.end(), [&](const Vec3& q) { return (q - x).norm() <= tol; });
+      };
+      const bool mirrored = is_poi(a - A * d);
+      // Copy a dimension already drawn (a vertex at distance A from a along
+      // another axis: Fig. 6a-c), else eyeball one where it names a point.
+      std::optional<Vec3> via;
+      for (int pass = 0; pass < 2 && !via; ++pass)
+        for (int axis = 0; axis < 3 && !via; ++axis) {
+          const Vec3 e = Vec3::Unit(axis);
+          if (std::abs(e.dot(d)) > 0.5) continue;
+          for (double sense : {1.0, -1.0}) {
+            const Vec3 x = a + sense * A * e;
+            if (!via && (pass == 0 ? known(x) : mirrored && is_poi(x))) via = x;
+          }
+        }
+      if (via) {
+        tick(guideline_to(a, *via), *via);
+        if (known(b)) continue;
+      }
+      tick(along, b);
+    }
   };
   for (std::size_t i = 0; i < plan.curves.size(); ++i) {
     const GroundTruthCurve& gc = plan.curves[i];
+    const bool axis_line = is_line(gc.curve) && axis_of(end(gc.curve) - start(gc.curve)) >= 0;
+    make_known(start(gc.curve));
+    // Its length by a tick too (the paper's cube "required our guideline
+    // ticks", §4), unless a drawn line or guideline across it meets its far
+    // end (Fig. 3e: a guideline intersection).
+    const Vec3 d = (end(gc.curve) - start(gc.curve)).normalized();
+    if (!axis_line || std::none_of(drawn_lines.begin(), drawn_lines.end(), [&](const DrawnLine& l) {
+          return l.d.cross(d).norm() > 1e-9 && on_drawn(l, end(gc.curve));
+        }))
+      make_known(end(gc.curve));
     if (!is_line(gc.curve) && !gc.curve.closed) {
       for (const Vec3& x : {start(gc.curve), end(gc.curve)}) {
         const auto line = std::find_if(drawn_lines.begin(), drawn_lines.end(), [&](const DrawnLine& l) {
@@ -261,12 +427,12 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
         const DrawnLine l = *line;
         const Vec3 from = (l.a - eye).dot(forward) <= (l.b - eye).dot(forward) ? l.a : l.b;
         guideline(from, (from == l.a ? l.b - l.a : l.a - l.b).normalized(), (l.b - l.a).norm());
-        const Vec3 across = l.d.cross(x - eye).normalized();
-        const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (camera.projection(1, 1) * camera.viewport[3]);
-        out.push_back({make_line(x - half * across, x + half * across), Layer::scaffold, std::nullopt});
+        tick(drawn_lines.back(), x);
       }
     }
     out.push_back({gc.curve, gc.layer, i});
+    vertices.push_back(start(gc.curve));
+    vertices.push_back(end(gc.curve));
     if (!is_line(gc.curve)) continue;
     const Vec3 a = start(gc.curve), b = end(gc.curve);
     drawn_lines.push_back({a, b, (b - a).normalized(), false});

@@ -46,10 +46,13 @@ GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net);
 // The drawing order of §2: first the longest axis-aligned horizontal scaffold
 // line in the lowest horizontal plane (the ground plane, Fig. 3a: it defines
 // the primary vanishing directions — its own, its horizontal perpendicular
-// and the vertical — so a diagonal will not do); then, scaffold before
-// shape, repeatedly the curve with the most ends on what is drawn (two, then
-// one, then none), the longest first (ties keep network order), reversed to
-// start from the drawing when only its end is on it.
+// and the vertical — so a diagonal will not do); then repeatedly the curve
+// with an end on what is drawn, construction (scaffold) before the model's,
+// most ends first, longest first (ties keep network order), reversed to
+// start from the drawing when only its end is on it. A line along no axis
+// waits until both its ends are drawn (it has no guideline to trace). When
+// nothing left touches the drawing, the curve whose start the fewest
+// dimension ticks reach from it (with_guidelines draws them).
 GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net);
 
 // The plan's curves in order, with guidelines and ticks (Fig. 3b–c, Fig. 6):
@@ -61,12 +64,22 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net);
 //    (toward the vanishing point), whichever way the edge runs from the known
 //    point. The far end of a later edge then lies on a guideline's line, and
 //    on a guideline intersection when another one passes there;
+//  - before a curve, its start — and its end, for a line along no axis or
+//    one whose far end no drawn line or guideline across it marks — is made
+//    a known point unless it is one or lies on a drawn line (Fig. 7d): by
+//    dimension ticks (§2.3) along the fewest axis-aligned steps between the
+//    network's points (curve ends, line crossings) from a known point, each
+//    a guideline and a tick, or Figure 6's transfer where the step's length
+//    is drawn along another axis already or its mirror image is a network
+//    point (the tick on that axis's guideline, transferred to both sides);
 //  - before a curve, for each of its ends inside a drawn line (not at its
 //    ends): a guideline along that line from its end nearer the eye (so it
 //    runs toward the vanishing point across the curve end), then a tick mark
 //    (§2.3) there: a 24 px stroke across the guideline (perpendicular to it
 //    and to the view ray), so the curve end becomes a known point.
-// Ticks, like guidelines, have no `intended` curve.
+// Ticks, like guidelines, have no `intended` curve. Every vanishing point
+// of the tablet view is off screen, where the corrector takes a guideline
+// drawn either way (§2.2).
 std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const View& camera);
 
 }  // namespace sketchlab::synthetic

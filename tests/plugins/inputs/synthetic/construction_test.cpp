@@ -89,45 +89,61 @@ TEST_CASE("the analytic order starts in the ground plane and builds from known p
     CHECK(axis(first.control_points.back() - first.control_points.front()) >= 0);
     CHECK(std::abs(first.control_points.front().y() - floor) < 1e-12);
     CHECK(std::abs(first.control_points.back().y() - floor) < 1e-12);
-    // Scaffold before shape; every later line starts on what is drawn (but
-    // the lamp's shade squares, which meet the drawing only at the arm end,
-    // in the middle of a side).
-    bool shape_seen = false;
+    // Every later line starts on what is drawn, but for the lamp, whose
+    // shade meets the drawing only at the arm end: none of its lines is
+    // drawn before that end is; a line along no axis joins two points drawn.
+    bool arm_end_drawn = false;
+    const Vec3 arm_end = model_center + Vec3(0.09, 0.105, 0.0);
     for (std::size_t i = 1; i < plan.curves.size(); ++i) {
-      const GroundTruthCurve& c = plan.curves[i];
-      if (c.layer == Layer::shape) shape_seen = true;
-      else CHECK_FALSE(shape_seen);
-      if (c.curve.kind == CurveKind::line && model != "lamp") CHECK(on_any(plan.curves, i, c.curve.control_points.front()));
+      const Curve& c = plan.curves[i].curve;
+      if (c.kind != CurveKind::line) continue;
+      const Vec3 a = c.control_points.front(), b = c.control_points.back();
+      const bool starts_on_drawing = on_any(plan.curves, i, a);
+      if (model != "lamp") CHECK(starts_on_drawing);
+      else if (!starts_on_drawing) CHECK(arm_end_drawn);
+      if (axis(b - a) < 0) CHECK((starts_on_drawing && on_any(plan.curves, i, b)));
+      for (const Vec3& p : {a, b}) arm_end_drawn = arm_end_drawn || (p - arm_end).norm() < 1e-12;
     }
+    if (model == "lamp") CHECK(arm_end_drawn);
   }
 }
 
-TEST_CASE("guidelines leave known vertices along the axis of an edge still to draw", "[synthetic][construction]") {
+TEST_CASE("guidelines and ticks start from known points", "[synthetic][construction]") {
   const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_cube(model_center, 0.3)));
   const View camera = tablet_view(plan);
-  const Vec3 forward = (model_center - eye_position(camera)).normalized();
   const auto strokes = with_guidelines(plan, camera);
   std::set<std::size_t> intended;
   std::vector<GroundTruthCurve> drawn;
-  int guides = 0;
+  std::vector<std::pair<Vec3, Vec3>> guides;  // point, unit direction
+  int ticks = 0;
+  auto on_guide = [&](const Vec3& p) {
+    return std::any_of(guides.begin(), guides.end(),
+                       [&](const auto& g) { return (p - g.first).cross(g.second).norm() < 1e-9; });
+  };
   for (const PlannedStroke& s : strokes) {
+    const Vec3 a = s.curve.control_points.front(), b = s.curve.control_points.back();
     if (s.intended) {
       CHECK(intended.insert(*s.intended).second);
       CHECK(s.curve.control_points == plan.curves[*s.intended].curve.control_points);
       drawn.push_back({s.curve, s.layer});
-      continue;
+    } else if (s.layer == Layer::guide) {
+      // Along an axis from a known point: on a drawn curve, or a tick (which
+      // lies on a guideline, as do the ticks it transfers).
+      CHECK(axis(b - a) >= 0);
+      CHECK((on_any(drawn, drawn.size(), a) || on_guide(a)));
+      guides.push_back({a, (b - a).normalized()});
+    } else {
+      // A tick: across a guideline drawn before it, at its middle (§2.3).
+      ++ticks;
+      CHECK(on_guide(0.5 * (a + b)));
     }
-    ++guides;
-    CHECK(s.layer == Layer::guide);
-    CHECK(axis(s.curve.control_points.back() - s.curve.control_points.front()) >= 0);
-    CHECK(on_any(drawn, drawn.size(), s.curve.control_points.front()));
-    // Toward the vanishing point: away from the eye along the axis.
-    CHECK((s.curve.control_points.back() - s.curve.control_points.front()).dot(forward) >= 0);
   }
   CHECK(intended.size() == plan.curves.size());
-  // A cube: 3 axes from each of its 8 corners, less the lines drawn already.
-  CHECK(guides > 0);
-  CHECK(guides < 24);
+  // A cube: 3 axes from each of its 8 corners, less the lines drawn already;
+  // its edges' lengths copied from the first by ticks (Figure 6).
+  CHECK(guides.size() > 0);
+  CHECK(guides.size() < 24);
+  CHECK(ticks > 0);
 }
 
 TEST_CASE("an analytic session has no ground truth for guidelines and refuses VR", "[synthetic][construction]") {
@@ -147,4 +163,29 @@ TEST_CASE("an analytic session has no ground truth for guidelines and refuses VR
   CHECK(rec.header.source.at("style") == "analytic");
   p.modality = Modality::vr;
   CHECK_THROWS_WITH(synthesize_session(p), Catch::Contains("modality=tablet"));
+}
+
+TEST_CASE("the lamp's shade is placed by dimension ticks on guidelines (§2.3, Figure 6)", "[synthetic][construction]") {
+  const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_lamp(model_center, 0.3)));
+  const auto strokes = with_guidelines(plan, tablet_view(plan));
+  std::vector<std::pair<Vec3, Vec3>> guides;  // point, unit direction
+  std::vector<Vec3> ticks;
+  for (const PlannedStroke& s : strokes) {
+    const Vec3 a = s.curve.control_points.front(), b = s.curve.control_points.back();
+    if (s.layer == Layer::guide) guides.push_back({a, (b - a).normalized()});
+    if (s.intended || s.layer == Layer::guide) continue;
+    const Vec3 mid = 0.5 * (a + b);
+    ticks.push_back(mid);
+    // A tick crosses a guideline drawn before it, at its middle.
+    CHECK(std::any_of(guides.begin(), guides.end(), [&](const auto& g) {
+      return (mid - g.first).cross(g.second).norm() < 1e-9;
+    }));
+  }
+  // The shade's top square (half side 0.018 m about the arm end, the middle
+  // of its side): the dimension is ticked at the square's centre on the
+  // guideline through the arm end, which transfers it to both corners.
+  const Vec3 arm_end = model_center + Vec3(0.09, 0.105, 0.0);
+  CHECK(std::any_of(ticks.begin(), ticks.end(),
+                    [&](const Vec3& t) { return (t - (arm_end + Vec3(0.018, 0, 0))).norm() < 1e-9; }));
+  CHECK(ticks.size() < 30);  // a few per part (20 now), not one per point
 }
