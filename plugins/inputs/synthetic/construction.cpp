@@ -361,17 +361,23 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
       if (A > tol) vertices.insert(vertices.end(), {y + A * o.d, y - A * o.d});
     }
   };
+  auto is_poi = [&](const Vec3& x) {
+    return std::any_of(pois.begin(), pois.end(), [&](const Vec3& q) { return (q - x).norm() <= tol; });
+  };
   // Makes p a known point by the fewest ticks (§2.3), unless it lies on a
-  // drawn line: along a chain of
-  // axis-aligned steps between points of interest from a known point, each
-  // step a guideline and a tick at its far end. When the step's point
-  // mirrored through its start is a point of interest too (a square's side
-  // about its midpoint, a circle's joints about its centre), the dimension is
-  // transferred as in Figure 6: a guideline through the start along another
-  // axis first, the tick at the same distance on it, which puts ticks at both.
+  // drawn line: along a chain of axis-aligned steps between points of
+  // interest from a known point, each step a guideline and a tick at its far
+  // end. Figure 6's transfer replaces that tick where it can: a tick at the
+  // step's length A on a guideline through the step's start along another
+  // axis puts ticks at ±A on the step's guideline, when that tick lies over
+  // a vertex (copying a dimension drawn already) or, the step's point
+  // mirrored through its start being a point of interest too (a square's
+  // corners about the middle of its side, a circle's joints about its
+  // centre), on a point of interest (one eyeballed dimension for both).
   auto make_known = [&](const Vec3& p) {
     // A point on a drawn line is the nearest point on it already (Fig. 7d).
-    if (std::any_of(drawn_lines.begin(), drawn_lines.end(), [&](const DrawnLine& l) { return !l.guide && on_drawn(l, p); }))
+    if (std::any_of(drawn_lines.begin(), drawn_lines.end(),
+                    [&](const DrawnLine& l) { return !l.guide && on_drawn(l, p); }))
       return;
     const std::vector<Vec3> chain = axis_chain(pois, known, p);
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
@@ -380,12 +386,7 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
       const Vec3 d = (b - a).normalized();
       const double A = (b - a).norm();
       const DrawnLine along = guideline_to(a, b);
-      auto is_poi = [&](const Vec3& x) {
-        return std::any_of(pois.begin(), pois.end(), [&](const Vec3& q) { return (q - x).norm() <= tol; });
-      };
       const bool mirrored = is_poi(a - A * d);
-      // Copy a dimension already drawn (a vertex at distance A from a along
-      // another axis: Fig. 6a-c), else eyeball one where it names a point.
       std::optional<Vec3> via;
       for (int pass = 0; pass < 2 && !via; ++pass)
         for (int axis = 0; axis < 3 && !via; ++axis) {
@@ -410,9 +411,9 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
     // Its length by a tick too (the paper's cube "required our guideline
     // ticks", §4), unless a drawn line or guideline across it meets its far
     // end (Fig. 3e: a guideline intersection).
-    const Vec3 d = (end(gc.curve) - start(gc.curve)).normalized();
+    const Vec3 dir = (end(gc.curve) - start(gc.curve)).normalized();
     if (!axis_line || std::none_of(drawn_lines.begin(), drawn_lines.end(), [&](const DrawnLine& l) {
-          return l.d.cross(d).norm() > 1e-9 && on_drawn(l, end(gc.curve));
+          return l.d.cross(dir).norm() > 1e-9 && on_drawn(l, end(gc.curve));
         }))
       make_known(end(gc.curve));
     if (!is_line(gc.curve) && !gc.curve.closed) {
