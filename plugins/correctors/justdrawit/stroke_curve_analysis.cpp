@@ -10,17 +10,6 @@ constexpr double pi = std::numbers::pi;
 constexpr double max_merge_angle = 0.75 * pi;  // §4.2: 3/4 π
 constexpr double min_travel_ratio = 0.955;     // cos 0.3: not in the paper, see README
 
-// Signed curve-arclength step, wrapped across the seam of a closed curve.
-double step(const Projected& c, double from, double to) {
-  double delta = to - from;
-  if (c.closed && c.length() > 0) {
-    const double l = c.length();
-    while (delta > 0.5 * l) delta -= l;
-    while (delta < -0.5 * l) delta += l;
-  }
-  return delta;
-}
-
 struct WalkPoint {
   std::size_t index;
   double inward;  // stroke arclength from the end being tested
@@ -49,6 +38,23 @@ bool off_end(const Projected& c, const Projection<Vec2>& p) {
 }
 
 }  // namespace
+
+double curve_step(const Projected& c, double from, double to) {
+  double delta = to - from;
+  if (c.closed && c.length() > 0) {
+    const double l = c.length();
+    while (delta > 0.5 * l) delta -= l;
+    while (delta < -0.5 * l) delta += l;
+  }
+  return delta;
+}
+
+double merge_middle(const Projected& c, const EndMatch& m) {
+  const double mid = m.curve_at_s0 + 0.5 * curve_step(c, m.curve_at_s0, m.curve_at_s1);
+  if (!c.closed || !(c.length() > 0)) return mid;
+  const double l = c.length();
+  return std::fmod(std::fmod(mid, l) + l, l);
+}
 
 Projected make_projected(Points2 pts, bool closed) {
   Projected p;
@@ -100,7 +106,7 @@ std::optional<EndMatch> merge_test(const Points2& stroke, const std::vector<doub
     }
     std::size_t b = a;
     while (b + 1 < w.size() && ok[b + 1] &&
-           dir_walk * step(curve, w[b].proj.s, w[b + 1].proj.s) >= -0.05 * d)
+           dir_walk * curve_step(curve, w[b].proj.s, w[b + 1].proj.s) >= -0.05 * d)
       ++b;
     if (w[b].inward - w[a].inward > best_len) {
       best_len = w[b].inward - w[a].inward;
@@ -114,7 +120,7 @@ std::optional<EndMatch> merge_test(const Points2& stroke, const std::vector<doub
   for (std::size_t k = best_a; k <= best_b; ++k) {
     d_a += w[k].proj.distance;
     alpha_a += angle[k];
-    if (k > best_a) s_c += step(curve, w[k - 1].proj.s, w[k].proj.s);
+    if (k > best_a) s_c += curve_step(curve, w[k - 1].proj.s, w[k].proj.s);
   }
   const double count = static_cast<double>(best_b - best_a + 1);
   d_a /= count;
