@@ -29,10 +29,10 @@ TEST_CASE("JustDrawIt places the curves of the bundled JustDrawIt-style tablet s
   // Figures reached at seed 1, default noise (README), with a margin. The
   // intended curves are 12, 12, 7 and 11: a few strokes stay apart or two
   // curves are combined (README).
-  const std::map<std::string, Figures> expected{{"cube_justdrawit", {0.006, 15}},
-                                                {"chair_justdrawit", {0.013, 12}},
-                                                {"mug_justdrawit", {0.0016, 8}},
-                                                {"lamp_justdrawit", {0.002, 11}}};
+  const std::map<std::string, Figures> expected{{"cube_justdrawit", {0.005, 14}},
+                                                {"chair_justdrawit", {0.0115, 10}},
+                                                {"mug_justdrawit", {0.0016, 7}},
+                                                {"lamp_justdrawit", {0.002, 12}}};
   std::vector<fs::path> recordings;
   for (const auto& [name, f] : expected)
     recordings.push_back(test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
