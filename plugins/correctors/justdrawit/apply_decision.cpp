@@ -287,6 +287,7 @@ void close_new_curve(Built& built, const Candidate& c, const std::vector<double>
   const Vec3 mid = mean(built.pts);
   const double d3 = d * ctx.cam.world_per_pixel(mid);
   const double k0 = c.self.kind == EndKind::merge ? merge_mid_stroke(c.self) : c.self.stroke_s;
+  // The stroke's head is open (no seam to wrap across).
   const double m0 = c.self.kind == EndKind::merge ? 0.5 * (c.self.curve_at_s0 + c.self.curve_at_s1) : c.self.curve_s;
   const Splice sp = close_splice(built.pts, index_at(cum, k0), index_at(cum, m0),
                                  d3 * (1 + 3 * std::clamp(c.q, 0.0, 1.0)),

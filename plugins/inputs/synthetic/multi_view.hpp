@@ -18,9 +18,10 @@ namespace sketchlab::synthetic {
 // every closed curve as one stroke (closing_loop); then, in view 1, every
 // curve oversketched once (Fig. 6): an open curve over [0.1, 0.9] of its
 // range (§4.2: an oversketch's ends merge with the curve without overhang),
-// a closed one whole from its start. Every stroke's `intended` is its curve. With `eye` (the
-// first view's eye), every stroke of a curve carries the draw plane the
-// person placed for it (`placed_draw_plane`); without, none.
+// a closed one whole from its start. Every stroke's `intended` is its
+// curve. With `eye` (the first view's eye), every stroke of a curve carries
+// the draw plane the person placed for it (`placed_draw_plane`); without,
+// none.
 std::vector<PlannedStroke> justdrawit_strokes(const GroundTruthNetwork& plan,
                                               const std::optional<Vec3>& eye = std::nullopt);
 
