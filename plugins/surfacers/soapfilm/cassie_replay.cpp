@@ -340,7 +340,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
           case Departure::at_smooth: ++why.astray_at_smooth; break;
           case Departure::no_start: ++why.astray_no_start; break;
           case Departure::none:
-          case Departure::no_simple_cycle: ++why.astray_no_simple_cycle; break;
+          case Departure::no_cycle: ++why.astray_no_cycle; break;
         }
         break;
       }

@@ -1,5 +1,6 @@
 #include "replay_causes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -57,11 +58,13 @@ bool closes_over(const CurveGraph& graph, const std::map<CurveId, std::int64_t>&
   return covered.size() == stroke_of.size() && components.size() == 1;
 }
 
-// The node-simple cycles over `segments` (both directions, every start)
-// through every curve of `curves`, at most `cap` of them (a depth-first
-// search; the patch's curves hold few segments).
-std::vector<Cycle> simple_cycles(CurveGraph& graph, const std::set<int>& segments, std::size_t curves,
-                                 std::size_t cap) {
+// The cycles over `segments` (both directions, every start) through every
+// curve of `curves`, at most `cap` of them: node-simple ones, or with
+// `revisit` closed walks using each segment once and passing nodes more
+// than once (item 24 allows revisits). A depth-first search; the patch's
+// curves hold few segments.
+std::vector<Cycle> cycles_over(CurveGraph& graph, const std::set<int>& segments, std::size_t curves, std::size_t cap,
+                               bool revisit) {
   std::map<NodeId, std::vector<HalfEdge>> out_of;
   for (int s : segments) {
     out_of[graph.segment(s).node0].push_back({s, true});
@@ -69,31 +72,35 @@ std::vector<Cycle> simple_cycles(CurveGraph& graph, const std::set<int>& segment
   }
   std::vector<Cycle> found;
   Cycle path;
-  std::set<NodeId> on_path;
+  std::set<NodeId> nodes_on_path;
+  std::set<int> segments_on_path;
   NodeId origin = 0;
   int budget = 100000;  // search steps, against a combinatorial blow-up
   const auto extend = [&](const auto& self, NodeId at) -> void {
     for (const HalfEdge& h : out_of[at]) {
       if (found.size() >= cap || --budget < 0) return;
-      if (!path.empty() && h.segment == path.back().segment) continue;
+      if (segments_on_path.count(h.segment)) continue;
       const NodeId next = graph.to(h);
+      path.push_back(h);
+      segments_on_path.insert(h.segment);
       if (next == origin) {
-        path.push_back(h);
         std::set<CurveId> covered;
         for (const HalfEdge& e : path) covered.insert(graph.segment(e.segment).curve);
         if (covered.size() == curves) found.push_back(path);
-        path.pop_back();
-      } else if (on_path.insert(next).second) {
-        path.push_back(h);
-        self(self, next);
-        path.pop_back();
-        on_path.erase(next);
       }
+      if (next != origin || revisit) {
+        if (revisit || nodes_on_path.insert(next).second) {
+          self(self, next);
+          if (!revisit) nodes_on_path.erase(next);
+        }
+      }
+      segments_on_path.erase(h.segment);
+      path.pop_back();
     }
   };
   for (const auto& [node, unused] : out_of) {
     origin = node;
-    on_path = {node};
+    nodes_on_path = {node};
     extend(extend, node);
   }
   return found;
@@ -104,9 +111,10 @@ std::vector<Cycle> simple_cycles(CurveGraph& graph, const std::set<int>& segment
 AstrayDetail departure(CurveGraph& graph, CycleSearcher& searcher, const std::set<int>& seeds, std::size_t curves,
                        const CycleSearchParams& params) {
   AstrayDetail out;
-  const std::vector<Cycle> targets = simple_cycles(graph, seeds, curves, 64);
+  std::vector<Cycle> targets = cycles_over(graph, seeds, curves, 64, false);
+  if (targets.empty()) targets = cycles_over(graph, seeds, curves, 64, true);
   if (targets.empty()) {
-    out.where = Departure::no_simple_cycle;
+    out.where = Departure::no_cycle;
     return out;
   }
   std::map<int, std::vector<WalkTrace>> walked;
@@ -144,8 +152,12 @@ AstrayDetail departure(CurveGraph& graph, CycleSearcher& searcher, const std::se
   const Vec3 carried = best_len - 1 < best->arrivals.size() ? best->arrivals[best_len - 1] : Vec3::Zero();
   if (f.defined && carried.norm() > 0.0) out.agreement = f.normal.dot(carried.normalized());
   const bool took = best_len < best->steps.size();
-  if (took) out.taken = graph.segment(best->steps[best_len].segment).curve;
-  if (took && graph.direction(best->steps[best_len]).dot(graph.direction(wanted)) > params.tie_cos)
+  const double cos_apart = took ? graph.direction(best->steps[best_len]).dot(graph.direction(wanted)) : 1.0;
+  if (took) {
+    out.taken = graph.segment(best->steps[best_len].segment).curve;
+    out.apart = std::acos(std::clamp(cos_apart, -1.0, 1.0));
+  }
+  if (took && cos_apart > params.tie_cos)
     out.where = Departure::near_tie;
   else if (out.segments == 2)
     out.where = Departure::at_two;
@@ -226,7 +238,7 @@ ReplayCauses& ReplayCauses::operator+=(const ReplayCauses& o) {
   astray_at_crossing += o.astray_at_crossing;
   astray_at_smooth += o.astray_at_smooth;
   astray_no_start += o.astray_no_start;
-  astray_no_simple_cycle += o.astray_no_simple_cycle;
+  astray_no_cycle += o.astray_no_cycle;
   miss_not_found += o.miss_not_found;
   miss_refused_two += o.miss_refused_two;
   miss_not_searched += o.miss_not_searched;

@@ -24,8 +24,9 @@ enum class MissingCycle {
 
 // Where the walks over a cycle they do not close (not_found) go astray. The
 // cycles CASSIE may have walked are the node-simple cycles of the patch's
-// curves through every one of its strokes; of our walks (two from each of
-// their segments, item 25), the one following such a cycle longest from
+// curves through every one of its strokes (if there is none, the closed
+// walks through them using each segment once); of our walks (two from each
+// of their segments, item 25), the one following such a cycle longest from
 // its start leaves it at a node of this kind (checked in this order).
 enum class Departure {
   none,
@@ -37,7 +38,7 @@ enum class Departure {
                     // there: item 24's |cos| < 0.5 case, where the app turns in the carried normal's plane
   at_smooth,        // another smooth node
   no_start,         // no walk starts along any of them (their segments' start nodes have no fitted plane)
-  no_simple_cycle,  // no node-simple cycle of its curves passes through every one of its strokes
+  no_cycle,         // no closed walk over its curves' segments passes through every one of its strokes
 };
 
 // The node where the walk leaves the cycle (Departure), for tracing a case.
@@ -49,6 +50,7 @@ struct AstrayDetail {
   double max_offset = 0.0;     // item 23's max |n·t| there
   double agreement = 0.0;      // carried normal · fitted normal (unit; 0 where either is missing)
   std::optional<CurveId> taken, wanted;  // the curves of the segment taken (none: the walk stopped) and of the cycle's next one
+  double apart = 0.0;  // rad between the tangents leaving the node along those two (0 when the walk stopped)
   int followed = 0, length = 0;   // segments of the cycle the walk followed, and its length
 };
 
@@ -79,7 +81,7 @@ struct ReplayCauses {
   int end_extra_other = 0;
   // miss_not_found by where the walks go astray (Departure).
   int astray_near_tie = 0, astray_at_two = 0, astray_at_undefined = 0, astray_at_sharp = 0, astray_at_crossing = 0,
-      astray_at_smooth = 0, astray_no_start = 0, astray_no_simple_cycle = 0;
+      astray_at_smooth = 0, astray_no_start = 0, astray_no_cycle = 0;
   int missed_created() const {
     return miss_elsewhere + miss_curve_absent + miss_not_closed + miss_not_found + miss_refused_two + miss_not_searched;
   }

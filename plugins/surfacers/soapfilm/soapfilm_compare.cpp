@@ -22,6 +22,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numbers>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -65,7 +67,7 @@ const char* departure_name(Departure d) {
     case Departure::at_crossing: return "smooth node, normals crossing";
     case Departure::at_smooth: return "smooth node";
     case Departure::no_start: return "no walk starts along it";
-    case Departure::no_simple_cycle: return "no simple cycle";
+    case Departure::no_cycle: return "no cycle";
     case Departure::none: break;
   }
   return "–";
@@ -253,8 +255,8 @@ int main(int argc, char** argv) {
   if (list_astray) {
     // One row per CASSIE patch no walk closes over (replay_causes.hpp).
     std::cout << "| session | event | time (s) | strokes | walks leave at | node | position (m) | segments "
-                 "| max \\|n·t\\| | carried · fitted | stroke taken | stroke of the cycle | followed |\n"
-              << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+                 "| max \\|n·t\\| | carried · fitted | stroke taken | stroke of the cycle | between them (°) | followed |\n"
+              << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows)
       for (const AstrayMiss& m : r.astray) {
         std::string strokes;
@@ -266,7 +268,8 @@ int main(int argc, char** argv) {
         std::cout << "| " << r.session << " | " << m.group << " | " << m.time << " | " << strokes << " | "
                   << departure_name(m.at.where) << " | " << m.at.node << " | " << pos << " | " << m.at.segments << " | "
                   << figs << " | " << (m.taken < 0 ? std::string("stopped") : std::to_string(m.taken)) << " | "
-                  << m.wanted << " | " << m.at.followed << "/" << m.at.length << " |\n";
+                  << m.wanted << " | " << std::lround(m.at.apart * 180.0 / std::numbers::pi) << " | " << m.at.followed
+                  << "/" << m.at.length << " |\n";
       }
     std::cout << "\n";
   }
@@ -306,7 +309,7 @@ int main(int argc, char** argv) {
   line("replay.astray_at_crossing", why.astray_at_crossing, "patches");
   line("replay.astray_at_smooth", why.astray_at_smooth, "patches");
   line("replay.astray_no_start", why.astray_no_start, "patches");
-  line("replay.astray_no_simple_cycle", why.astray_no_simple_cycle, "patches");
+  line("replay.astray_no_cycle", why.astray_no_cycle, "patches");
   line("replay.miss_refused_two", why.miss_refused_two, "patches");
   line("replay.miss_not_searched", why.miss_not_searched, "patches");
   line("replay.extra_elsewhere", why.extra_elsewhere, "patches");
