@@ -5,7 +5,8 @@
 # OUT/sessions, runs the experiment on them into OUT/runs, and prints one
 # line per (model, style, noise, stack): the median over the seeds of the
 # ground-truth figures of metrics.csv (aligned: gt_distance_mean_aligned_eye_scale_m,
-# written for one-view sessions, and raw: gt_distance_mean_m, in mm;
+# written for one-view sessions, raw: gt_distance_mean_m, and the shape
+# pair gt_shape_distance_mean_m / gt_shape_coverage_mean_m, in mm;
 # parallel/perpendicular/coincident recalls; dangling endpoint ratio).
 #
 #   scripts/tablet-sweep.sh OUT
@@ -45,7 +46,7 @@ EOF
 rm -rf "$out/runs/tablet-sweep"
 "$bin" run "$out/sweep.yaml" --no-timings >/dev/null 2>&1
 # metrics.csv: recording,stack,<sweep values>,ok,error,wall_ms,<metrics...>
-awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_parallel_recall gt_perpendicular_recall gt_coincident_point_recall dangling_endpoint_ratio" '
+awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_shape_distance_mean_m gt_shape_coverage_mean_m gt_parallel_recall gt_perpendicular_recall gt_coincident_point_recall dangling_endpoint_ratio" '
   function median(list,   n, a, i, j, t) {
     n = split(list, a, " ")
     for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (a[j] + 0 < a[i] + 0) { t = a[i]; a[i] = a[j]; a[j] = t }
@@ -64,10 +65,10 @@ awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_para
       for (i = 1; i <= nk; ++i) {
         x = median(v[order[g], i])
         if (x == "-") printf " -"
-        else if (i <= 2) printf " %.1f", 1000 * x
+        else if (i <= 4) printf " %.1f", 1000 * x
         else printf " %.2f", x
       }
       printf "\n"
     }
   }' "$out/runs/tablet-sweep/metrics.csv" | sort -k1,1 -k2,2 -k4,4 -k3,3n |
-  { echo "model style noise stack aligned_mm raw_mm parallel perpendicular coincident dangling"; cat; } | column -t
+  { echo "model style noise stack aligned_mm raw_mm shape_mm coverage_mm parallel perpendicular coincident dangling"; cat; } | column -t

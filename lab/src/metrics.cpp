@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -332,6 +333,37 @@ void eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, C
   m.values["gt_eye_scale"] = scale;
 }
 
+// The output against the intended shape as a whole (a Chamfer pair), for
+// correctors that build one curve from several strokes: JustDrawIt extends a
+// curve with a stroke that continues it (§4.2), so one curve may cover two
+// intended curves drawn in line, and gt_distance_mean_m scores it against its
+// last stroke's only. Accuracy: each output sample to the nearest intended
+// curve of any live stroke; coverage: each intended sample to the nearest
+// output curve, so that a missing or short curve still counts.
+void ground_truth_shape_metrics(const Sketch& sketch, const std::map<StrokeId, Curve>& truth,
+                                const MetricsOptions& o, CaseMetrics& m) {
+  std::vector<const Curve*> intended, output;
+  for (StrokeId s : live_strokes(sketch))
+    if (auto it = truth.find(s); it != truth.end()) intended.push_back(&it->second);
+  for (const auto& [id, c] : sketch.network.curves())
+    if (truth.count(c.source_stroke)) output.push_back(&c.curve);
+  if (intended.empty() || output.empty()) return;
+  const auto mean_distance = [&](const std::vector<const Curve*>& from, const std::vector<const Curve*>& to) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const Curve* c : from)
+      for (const Vec3& p : sample_by_arclength(*c, o.resample)) {
+        double d = std::numeric_limits<double>::infinity();
+        for (const Curve* t : to) d = std::min(d, closest_point(*t, p).distance);
+        sum += d;
+        ++count;
+      }
+    return count ? sum / double(count) : 0.0;
+  };
+  m.values["gt_shape_distance_mean_m"] = mean_distance(output, intended);
+  m.values["gt_shape_coverage_mean_m"] = mean_distance(intended, output);
+}
+
 void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMetrics& m) {
   const Sketch& sketch = r.session.sketch();
   const Network& net = sketch.network;
@@ -358,6 +390,7 @@ void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMe
     m.values["gt_distance_max_m"] = max;
   }
   eye_scale_aligned_distance(sketch, refs->second, strokes, o, m);
+  ground_truth_shape_metrics(sketch, refs->second, o, m);
 
   // Relations: intended ones from the track, detected ones measured on the
   // output over every pair (or single stroke for planarity).

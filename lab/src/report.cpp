@@ -32,7 +32,8 @@ const char* const report_web_script = "report_web/sketchlab_report.js";
 const std::vector<std::string> headline = {
     "latency_p50_ms", "latency_p95_ms", "curves", "nodes", "patches", "dangling_endpoint_ratio",
     "input_deviation_mean_m", "ref_cassie_endpoint_mean_m", "ref_cassie_snap_agreement",
-    "gt_distance_mean_m", "gt_distance_mean_aligned_eye_scale_m", "gt_parallel_recall",
+    "gt_distance_mean_m", "gt_distance_mean_aligned_eye_scale_m", "gt_shape_distance_mean_m",
+    "gt_shape_coverage_mean_m", "gt_parallel_recall",
     "gt_perpendicular_recall", "gt_coincident_point_recall"};
 
 std::string number(double v) {

@@ -151,3 +151,59 @@ TEST_CASE("relations on a stroke whose curve a later stroke took over are scored
   CHECK(m.values.at("gt_perpendicular_recall") == 1.0);
   CHECK(m.values.at("gt_coincident_point_recall") == 1.0);
 }
+
+namespace {
+
+// Stroke 1 draws `first`; stroke 2 extends it into `merged` (one curve for
+// both, kept for the last stroke), as JustDrawIt extends a curve with a
+// stroke drawn in line with it (§4.2).
+class ExtendCorrector : public Corrector {
+ public:
+  ExtendCorrector(Curve first, Curve merged) : first_(std::move(first)), merged_(std::move(merged)) {}
+  Correction correct(const Stroke& stroke, const Sketch& sketch) override {
+    Correction out;
+    for (const auto& [id, c] : sketch.network.curves()) out.edit.curves_removed.push_back(id);
+    NetworkCurve nc;
+    nc.id = sketch.network.next_curve_id();
+    nc.curve = stroke.id == 1 ? first_ : merged_;
+    nc.source_stroke = stroke.id;
+    out.edit.curves_added.push_back(nc);
+    return out;
+  }
+
+ private:
+  Curve first_, merged_;
+};
+
+CaseMetrics extended_case(const Curve& second_truth) {
+  const Curve a = make_line({0, 1, 0}, {0.3, 1, 0});
+  const std::map<StrokeId, Curve> truth{{1, a}, {2, second_truth}};
+  ReplayResult r{"extend", RecordingHeader{},
+                 Session(Workspace{}, std::make_shared<ExtendCorrector>(a, make_line({0, 1, 0}, {0.6, 1, 0})), nullptr), {}};
+  for (const auto& [id, curve] : truth) {
+    const Stroke s = test::sampled_stroke(id, 3, double(id), 0.1, [&](int i) { return evaluate(curve, 0.5 * i); });
+    r.steps.push_back(r.session.handle(Event{double(id) + 0.5, StrokeEvent{s}}));
+    REQUIRE(r.steps.back().error.empty());
+    r.steps.push_back(r.session.handle(Event{double(id) + 0.5, ReferenceEvent{id, "ground_truth", curve}}));
+  }
+  REQUIRE(r.session.sketch().network.curves().size() == 1);
+  return compute_metrics(r);
+}
+
+}  // namespace
+
+TEST_CASE("the shape figures score a curve built from two strokes against both intended curves",
+          "[metrics][ground_truth]") {
+  // Exactly the two intended curves, drawn in line: the per-stroke figure
+  // compares the whole curve with the second stroke's half only.
+  const CaseMetrics exact = extended_case(make_line({0.3, 1, 0}, {0.6, 1, 0}));
+  CHECK(exact.values.at("gt_distance_max_m") == Approx(0.3).margin(1e-6));
+  CHECK(exact.values.at("gt_shape_distance_mean_m") < 1e-12);
+  CHECK(exact.values.at("gt_shape_coverage_mean_m") < 1e-12);
+
+  // The second intended curve reaches 0.3 m further than the output: the
+  // output lies on the intended shape, the coverage counts what it misses.
+  const CaseMetrics shorter = extended_case(make_line({0.3, 1, 0}, {0.9, 1, 0}));
+  CHECK(shorter.values.at("gt_shape_distance_mean_m") < 1e-12);
+  CHECK(shorter.values.at("gt_shape_coverage_mean_m") > 0.02);
+}

@@ -18,9 +18,10 @@ EndMatch flipped(EndMatch m, double length) {
   return m;
 }
 
-double merge_mid_curve(const EndMatch& m) { return 0.5 * (m.curve_at_s0 + m.curve_at_s1); }
 double merge_mid_stroke(const EndMatch& m) { return 0.5 * (m.stroke_s0 + m.stroke_s1); }
-double attach_curve_s(const EndMatch& m) { return m.kind == EndKind::merge ? merge_mid_curve(m) : m.curve_s; }
+double attach_curve_s(const Projected& c, const EndMatch& m) {
+  return m.kind == EndKind::merge ? merge_middle(c, m) : m.curve_s;
+}
 double attach_stroke_s(const EndMatch& m) { return m.kind == EndKind::merge ? merge_mid_stroke(m) : m.stroke_s; }
 
 // Depths (relative to `plane`) at the curve's points.
@@ -118,7 +119,7 @@ Built apply_single(const Candidate& cand, SceneItem item, const Points2& s2, con
   // plane moved to the attached curve point (§4.4.1).
   Plane plane = ctx.cam.film_plane(item.centroid);
   if (ctx.draw_plane) {
-    const double s = has_s ? attach_curve_s(m.start) : attach_curve_s(m.end);
+    const double s = attach_curve_s(item.proj, has_s ? m.start : m.end);
     plane = {item.pts3[index_at(item.proj.cum, s)], ctx.draw_plane->normal};
   }
   auto zc = curve_depths(ctx.cam, plane, item.pts3);
@@ -174,7 +175,7 @@ Built apply_single(const Candidate& cand, SceneItem item, const Points2& s2, con
   if (m.type == MatchType::oversketch) {
     Points3 base = c3;
     std::vector<double> bcum = c2cum;
-    double a = merge_mid_curve(m.start), b = merge_mid_curve(m.end);
+    double a = merge_middle(item.proj, m.start), b = merge_middle(item.proj, m.end);
     if (item.proj.closed) {
       // Rotate the loop so its seam lies in the middle of the part the
       // stroke does not touch; then it is an open over-sketch.
@@ -205,9 +206,9 @@ Built apply_single(const Candidate& cand, SceneItem item, const Points2& s2, con
     joins = {{p1.join_begin, p1.join_end}, {p2.join_begin, p2.join_end}};
     out.objectives = {p1.objective, p2.objective};
   } else if (m.type == MatchType::extend_close) {
-    const std::size_t ks = index_at(c2cum, attach_curve_s(m.start));
+    const std::size_t ks = index_at(c2cum, attach_curve_s(item.proj, m.start));
     const std::size_t ms = index_at(cum, attach_stroke_s(m.start));
-    const std::size_t ke = index_at(c2cum, attach_curve_s(m.end));
+    const std::size_t ke = index_at(c2cum, attach_curve_s(item.proj, m.end));
     const std::size_t me = index_at(cum, attach_stroke_s(m.end));
     const Splice p1 = splice(c3, ks, s3, ms, radius, mg_s, spacing, tw);
     const Splice p2 = close_splice(p1.pts, after_splice(p1, me), std::min(ke, p1.join_begin), radius,
@@ -222,7 +223,7 @@ Built apply_single(const Candidate& cand, SceneItem item, const Points2& s2, con
     // extend / partial over-sketch from one end. From the start:
     // curve[..k] + H + stroke[m..]; from the end: stroke[..m] + H + curve[k..].
     const EndMatch& e = has_s ? m.start : m.end;
-    const std::size_t k = index_at(c2cum, attach_curve_s(e));
+    const std::size_t k = index_at(c2cum, attach_curve_s(item.proj, e));
     const std::size_t ms = index_at(cum, attach_stroke_s(e));
     const Splice p1 = has_s ? splice(c3, k, s3, ms, radius, mg_s, spacing, tw)
                             : splice(s3, ms, c3, k, radius, mg_e, spacing, tw);
@@ -268,11 +269,11 @@ Built apply_combine(const Candidate& cand, SceneItem a, SceneItem b, const Point
   }
   const double d3 = d * ctx.cam.world_per_pixel(0.5 * (a.centroid + b.centroid));
   const double spacing = 0.1 * d3, radius = d3 * (1 + 3 * std::clamp(cand.q, 0.0, 1.0));
-  const Splice p1 = splice(a.pts3, index_at(a.proj.cum, attach_curve_s(ms)), *lifted,
+  const Splice p1 = splice(a.pts3, index_at(a.proj.cum, attach_curve_s(a.proj, ms)), *lifted,
                            index_at(cum, attach_stroke_s(ms)), radius, ms.kind == EndKind::merge,
                            spacing, 0.5 * d3);
   const Splice p2 = splice(p1.pts, after_splice(p1, index_at(cum, attach_stroke_s(me))), b.pts3,
-                           index_at(b.proj.cum, attach_curve_s(me)), radius,
+                           index_at(b.proj.cum, attach_curve_s(b.proj, me)), radius,
                            me.kind == EndKind::merge, spacing, 0.5 * d3);
   out.pts = p2.pts;
   out.objectives = {p1.objective, p2.objective};
@@ -286,7 +287,8 @@ void close_new_curve(Built& built, const Candidate& c, const std::vector<double>
   const Vec3 mid = mean(built.pts);
   const double d3 = d * ctx.cam.world_per_pixel(mid);
   const double k0 = c.self.kind == EndKind::merge ? merge_mid_stroke(c.self) : c.self.stroke_s;
-  const double m0 = c.self.kind == EndKind::merge ? merge_mid_curve(c.self) : c.self.curve_s;
+  // The stroke's head is open (no seam to wrap across).
+  const double m0 = c.self.kind == EndKind::merge ? 0.5 * (c.self.curve_at_s0 + c.self.curve_at_s1) : c.self.curve_s;
   const Splice sp = close_splice(built.pts, index_at(cum, k0), index_at(cum, m0),
                                  d3 * (1 + 3 * std::clamp(c.q, 0.0, 1.0)),
                                  c.self.kind == EndKind::merge, 0.1 * d3, 0.5 * d3);

@@ -19,6 +19,10 @@ struct Projected {
 };
 Projected make_projected(Points2 pts, bool closed);
 
+// Signed curve-arclength step from `from` to `to`, the short way across the
+// seam of a closed curve.
+double curve_step(const Projected& c, double from, double to);
+
 enum class EndKind { none, merge, join };
 
 // How one end of the stroke meets the curve.
@@ -42,6 +46,12 @@ struct EndMatch {
   // q_m of this end (§4.3: merge 0.7 d_a/d + 0.3 α_a/(3π/4); join eq. 3–5).
   double score = 0;
 };
+
+// The curve arclength halfway along a merge's overlap (curve_at_s0 to
+// curve_at_s1): the start of a merge with a closed curve, where the stroke
+// begins at the seam, runs from near the end across it (e.g. 570 → 40 px on
+// a 600 px loop; the middle is 5, not 305).
+double merge_middle(const Projected& c, const EndMatch& m);
 
 // Merge test (eq. 1) of one stroke end (`at_end` false: the start).
 std::optional<EndMatch> merge_test(const Points2& stroke, const std::vector<double>& cum,

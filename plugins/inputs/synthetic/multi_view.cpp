@@ -31,6 +31,31 @@ Vec4 placed_draw_plane(const Curve& curve, const Vec3& eye) {
   return plane_through(mean, svd.matrixV().col(2));
 }
 
+namespace {
+
+// `head` then `tail`, which starts where `head` ends; open.
+Curve concatenated(Curve head, const Curve& tail) {
+  head.control_points.insert(head.control_points.end(), tail.control_points.begin() + 1, tail.control_points.end());
+  head.sharp.insert(head.sharp.end(), tail.sharp.begin() + 1, tail.sharp.end());
+  head.closed = false;
+  return head;
+}
+
+}  // namespace
+
+Curve loop_from(const Curve& loop, double t) {
+  if (!loop.closed) throw std::invalid_argument("synthetic: loop_from needs a closed curve");
+  const auto [before, after] = split(loop, t);
+  Curve out = concatenated(after, before);
+  out.closed = true;
+  return out;
+}
+
+Curve closing_loop(const Curve& loop) {
+  const Curve from = loop_from(loop, loop_start);
+  return concatenated(from, sub_curve(from, 0.0, closing_overlap * from.t_max()));
+}
+
 std::vector<PlannedStroke> justdrawit_strokes(const GroundTruthNetwork& plan, const std::optional<Vec3>& eye) {
   std::vector<PlannedStroke> out;
   std::vector<std::optional<Vec4>> planes(plan.curves.size());
@@ -39,7 +64,7 @@ std::vector<PlannedStroke> justdrawit_strokes(const GroundTruthNetwork& plan, co
   for (std::size_t i = 0; i < plan.curves.size(); ++i) {
     const GroundTruthCurve& gc = plan.curves[i];
     if (gc.curve.closed) {
-      out.push_back({gc.curve, gc.layer, i, 0, planes[i]});
+      out.push_back({closing_loop(gc.curve), gc.layer, i, 0, planes[i]});
       continue;
     }
     const double t = gc.curve.t_max();

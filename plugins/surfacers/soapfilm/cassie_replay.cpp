@@ -149,7 +149,8 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
   struct Missing {
     StrokeSet strokes;
     MissingCycle why;
-    Departure astray;
+    AstrayDetail astray;
+    std::size_t group;
   };
   std::vector<Missing> missing;
   std::map<StrokeSet, std::string> removed_by;
@@ -271,9 +272,9 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
         const auto o = ours_at.find(it->first);
         const int unmatched = it->second - std::min(it->second, o == ours_at.end() ? 0 : o->second);
         if (unmatched == 0) continue;
-        Departure astray = Departure::none;
+        AstrayDetail astray;
         const MissingCycle why = classify_missing(net, curves.curve_of, it->first.second, params.search, &astray);
-        for (int k = 0; k < unmatched; ++k) missing.push_back({it->first.second, why, astray});
+        for (int k = 0; k < unmatched; ++k) missing.push_back({it->first.second, why, astray, ev.group});
       }
     result.events.push_back(std::move(ev));
   }
@@ -315,7 +316,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     result.figures.matched_created += m;
     if (n > m && ours_ever.count(key.second)) result.figures.matched_elsewhere += n - m;
   }
-  for (const auto& [strokes, cause, astray] : missing) {
+  for (const auto& [strokes, cause, astray, group] : missing) {
     if (ours_ever.count(strokes)) {
       ++why.miss_elsewhere;
       continue;
@@ -323,17 +324,26 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     switch (cause) {
       case MissingCycle::curve_absent: ++why.miss_curve_absent; break;
       case MissingCycle::not_closed: ++why.miss_not_closed; break;
-      case MissingCycle::not_found:
+      case MissingCycle::not_found: {
         ++why.miss_not_found;
-        switch (astray) {
+        auto stroke = [&](const std::optional<CurveId>& c) {
+          const auto it = c ? curves.cassie_of.find(*c) : curves.cassie_of.end();
+          return it == curves.cassie_of.end() ? std::int64_t{-1} : it->second;
+        };
+        result.astray.push_back({group, group_times[group], strokes, astray, stroke(astray.taken), stroke(astray.wanted)});
+        switch (astray.where) {
+          case Departure::near_tie: ++why.astray_near_tie; break;
           case Departure::at_two: ++why.astray_at_two; break;
-          case Departure::at_sharp: ++why.astray_at_sharp; break;
-          case Departure::at_smooth: ++why.astray_at_smooth; break;
           case Departure::at_undefined: ++why.astray_at_undefined; break;
-          case Departure::inside:
-          case Departure::none: ++why.astray_inside; break;
+          case Departure::at_sharp: ++why.astray_at_sharp; break;
+          case Departure::at_crossing: ++why.astray_at_crossing; break;
+          case Departure::at_smooth: ++why.astray_at_smooth; break;
+          case Departure::no_start: ++why.astray_no_start; break;
+          case Departure::none:
+          case Departure::no_cycle: ++why.astray_no_cycle; break;
         }
         break;
+      }
       case MissingCycle::refused_two: ++why.miss_refused_two; break;
       case MissingCycle::not_searched: ++why.miss_not_searched; break;
     }

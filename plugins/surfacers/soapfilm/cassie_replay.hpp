@@ -72,9 +72,21 @@ struct ReplayEvent {
   std::vector<PatchMeshTimings> meshed;  // per patch meshed: CPU ms of each stage
 };
 
+// A CASSIE patch counted "no walk closes" (MissingCycle::not_found), and
+// where the walks leave it.
+struct AstrayMiss {
+  std::size_t group = 0;
+  double time = 0.0;  // the group's event time
+  StrokeSet strokes;
+  AstrayDetail at;
+  // The CASSIE strokes of at.taken and at.wanted, -1 for none.
+  std::int64_t taken = -1, wanted = -1;
+};
+
 struct ReplayResult {
   std::vector<ReplayEvent> events;  // in replay order
   ReplayFigures figures;
+  std::vector<AstrayMiss> astray;  // figures.causes.miss_not_found of them
   std::vector<std::string> warnings;  // the session loader's and the replay's
 };
 

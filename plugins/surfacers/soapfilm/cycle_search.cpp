@@ -89,7 +89,7 @@ const NodeFrame& CycleSearcher::frame(NodeId node) {
   return frames_.emplace(node, fit_node_frame(tangents, opposite, params_.frame)).first->second;
 }
 
-std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal) {
+std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival) {
   const NodeId b = graph_->to(in);
   const std::vector<HalfEdge> outs = graph_->outgoing(b);
   if (outs.size() < 2) return std::nullopt;  // a dangling end (item 24)
@@ -97,6 +97,7 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal) {
   const int n = std::max(2, static_cast<int>(std::ceil(graph_->span(in.segment) * params_.transport_steps)) + 1);
   const Vec3 transported =
       parallel_transport(graph_->curve_of(in), graph_->parameters(in, n), in.forward, normal).normalized();
+  if (arrival) *arrival = transported;
   std::vector<HalfEdge> cands;
   std::vector<Leaving> dirs;
   for (const HalfEdge& h : outs)
@@ -169,9 +170,9 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal) {
   return cands[static_cast<std::size_t>(pick)];
 }
 
-std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, Cycle* trace) {
+std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, WalkTrace* trace) {
   ++walks_;
-  if (trace) *trace = {start};
+  if (trace) *trace = {{start}, {}};
   if (is_loop(graph_->segment(start.segment))) return Cycle{start};
   Cycle cycle{start};
   std::set<int> used{start.segment};
@@ -180,9 +181,11 @@ std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_norma
   HalfEdge cur = start;
   while (true) {
     check_budget();  // issue 17: the per-event time budget
-    const auto next = turn(cur, normal);
+    Vec3 arrival = Vec3::Zero();
+    const auto next = turn(cur, normal, trace ? &arrival : nullptr);
+    if (trace) trace->arrivals.push_back(arrival);
     if (!next) return std::nullopt;
-    if (trace && !(*next == start)) trace->push_back(*next);
+    if (trace && !(*next == start)) trace->steps.push_back(*next);
     if (*next == start) {
       if (cycle.size() < 2) return std::nullopt;
       if (params_.reject_outer && winds_clockwise(cycle, normal_sum)) return std::nullopt;
@@ -211,10 +214,10 @@ bool CycleSearcher::winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) 
   return area.dot(normal_sum) < 0.0;
 }
 
-std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<Cycle>* traces) {
+std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<WalkTrace>* traces) {
   std::vector<Cycle> out;
-  Cycle trace;
-  Cycle* t = traces ? &trace : nullptr;
+  WalkTrace trace;
+  WalkTrace* t = traces ? &trace : nullptr;
   // A copy: frame() below may split more curves into graph segments, which
   // reallocates the graph's segment storage (ASan: heap-use-after-free).
   const GraphSegment g = graph_->segment(segment);

@@ -62,6 +62,13 @@ struct CycleSearchParams {
 
 using Cycle = std::vector<HalfEdge>;
 
+// What one walk did, closed or not (diagnostics: where a walk leaves the
+// cycle it was expected to follow, and with which normal it got there).
+struct WalkTrace {
+  Cycle steps;                  // the half-edges walked, the start first
+  std::vector<Vec3> arrivals;   // the normal carried to to(steps[i]), one per turn made
+};
+
 // A direction leaving a node along a segment: the unit tangent there, and
 // the unit direction towards the segment's other node (zero for a loop).
 struct Leaving {
@@ -81,23 +88,23 @@ class CycleSearcher {
   // with fewer than 2 segments or on a segment already in the cycle, and
   // closes when it turns back into `start` with at least 2 segments. A loop
   // segment is a cycle by itself. Nodes may be revisited.
-  // `trace`, when given, receives the half-edges walked, closed or not (for
-  // diagnostics: where a walk leaves the cycle it was expected to follow).
-  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, Cycle* trace = nullptr);
+  // `trace`, when given, receives what the walk did (WalkTrace).
+  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, WalkTrace* trace = nullptr);
 
   // The two walks of a segment (item 25), one with each orientation of the
   // normal at its start node: node0, unless node0 is sharp (or has no
   // normal) and node1 is not. May return the same cycle twice.
   // `traces`, when given, receives the trace of each walk (see walk()).
-  std::vector<Cycle> search_segment(int segment, std::vector<Cycle>* traces = nullptr);
+  std::vector<Cycle> search_segment(int segment, std::vector<WalkTrace>* traces = nullptr);
 
   int walks() const { return walks_; }
 
  private:
   Leaving leaving(HalfEdge h) const;
   // Next half-edge at to(in) given the oriented normal carried along `in`.
-  // Updates `normal` to the oriented normal leaving the node.
-  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal);
+  // Updates `normal` to the oriented normal leaving the node; `arrival`,
+  // when given, receives the normal carried to the node.
+  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr);
   // Whether a closed walk runs clockwise around the mean of the normals it
   // used (`normal_sum`, one unit normal per node): the outer border.
   bool winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) const;

@@ -24,7 +24,8 @@ double largest_cross(const std::vector<Vec3>& d) {
   return best;
 }
 
-// Plane through the centroid of {0, d_1..d_k} (CASSIE app, item 23).
+// Plane through the centroid of {0, d_1..d_k} (CASSIE app, item 23); not
+// yet tested for sharpness.
 NodeFrame fit(const std::vector<Vec3>& d, const NodeFrameParams& params) {
   NodeFrame frame;
   const int k = static_cast<int>(d.size());
@@ -46,10 +47,16 @@ NodeFrame fit(const std::vector<Vec3>& d, const NodeFrameParams& params) {
   frame.normal = n;
   frame.defined = true;
   frame.fit_error = std::sqrt(std::max(lambda(0), 0.0) / (k + 1));
-  for (const Vec3& v : d) frame.max_offset = std::max(frame.max_offset, std::abs(n.dot(v)));
+  return frame;
+}
+
+// Item 23: sharp when some tangent leaves the plane by more than θ
+// (max |n·t| > sin θ), the tangents whichever set the plane was fitted to.
+void test_sharp(NodeFrame& frame, const std::vector<Vec3>& tangents, const NodeFrameParams& params) {
+  if (!frame.defined) return;
+  for (const Vec3& t : tangents) frame.max_offset = std::max(frame.max_offset, std::abs(frame.normal.dot(t)));
   frame.sharp = frame.max_offset > std::cos(0.5 * std::numbers::pi - params.sharp_angle) ||
                 frame.fit_error > params.sharp_error;
-  return frame;
 }
 
 }  // namespace
@@ -57,9 +64,14 @@ NodeFrame fit(const std::vector<Vec3>& d, const NodeFrameParams& params) {
 NodeFrame fit_node_frame(const std::vector<Vec3>& tangents, const std::vector<Vec3>& opposite,
                          const NodeFrameParams& params) {
   const std::vector<Vec3> t = unit(tangents);
-  if (largest_cross(t) >= params.collinear) return fit(t, params);
-  NodeFrame f = fit(unit(opposite), params);
-  f.from_opposite = true;
+  NodeFrame f;
+  if (largest_cross(t) >= params.collinear) {
+    f = fit(t, params);
+  } else {
+    f = fit(unit(opposite), params);
+    f.from_opposite = true;
+  }
+  test_sharp(f, t, params);
   return f;
 }
 

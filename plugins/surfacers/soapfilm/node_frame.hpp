@@ -5,7 +5,8 @@
 // Utils.FitPlane): the plane is fitted through the centroid of the points
 // {P, P + t_i}; when the tangents are nearly collinear the directions towards
 // the segments' opposite nodes are fitted instead; a node is sharp when some
-// fitted direction leaves the plane by more than θ.
+// tangent leaves the plane by more than θ (the tangents, also when the plane
+// was fitted to the opposite nodes: item 23's test is max |n·t|).
 #include <vector>
 
 #include "sketchlab/types.hpp"
@@ -32,7 +33,7 @@ struct NodeFrame {
   bool sharp = false;
   bool from_opposite = false;  // fitted to the directions towards the opposite nodes
   double fit_error = 0.0;      // RMS distance of {0, d_i} to the fitted plane
-  double max_offset = 0.0;     // max_i |n · d_i| over the fitted directions d_i
+  double max_offset = 0.0;     // max_i |n · t_i| over the unit tangents t_i (item 23's sharp test)
 };
 
 // `tangents`: unit tangents leaving the node along each incident segment;

@@ -1,5 +1,8 @@
 #include "replay_causes.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <set>
 
 #include "patch_upkeep.hpp"
@@ -55,11 +58,125 @@ bool closes_over(const CurveGraph& graph, const std::map<CurveId, std::int64_t>&
   return covered.size() == stroke_of.size() && components.size() == 1;
 }
 
+// The cycles over `segments` (both directions, every start) through every
+// curve of `curves`, at most `cap` of them: node-simple ones, or with
+// `revisit` closed walks using each segment once and passing nodes more
+// than once (item 24 allows revisits). A depth-first search; the patch's
+// curves hold few segments.
+std::vector<Cycle> cycles_over(CurveGraph& graph, const std::set<int>& segments, std::size_t curves, std::size_t cap,
+                               bool revisit) {
+  std::map<NodeId, std::vector<HalfEdge>> out_of;
+  for (int s : segments) {
+    out_of[graph.segment(s).node0].push_back({s, true});
+    out_of[graph.segment(s).node1].push_back({s, false});
+  }
+  std::vector<Cycle> found;
+  Cycle path;
+  std::set<NodeId> nodes_on_path;
+  std::set<int> segments_on_path;
+  NodeId origin = 0;
+  int budget = 100000;  // search steps, against a combinatorial blow-up
+  const auto extend = [&](const auto& self, NodeId at) -> void {
+    for (const HalfEdge& h : out_of[at]) {
+      if (found.size() >= cap || --budget < 0) return;
+      if (segments_on_path.count(h.segment)) continue;
+      const NodeId next = graph.to(h);
+      path.push_back(h);
+      segments_on_path.insert(h.segment);
+      if (next == origin) {
+        std::set<CurveId> covered;
+        for (const HalfEdge& e : path) covered.insert(graph.segment(e.segment).curve);
+        if (covered.size() == curves) found.push_back(path);
+      }
+      if (next != origin || revisit) {
+        if (revisit || nodes_on_path.insert(next).second) {
+          self(self, next);
+          if (!revisit) nodes_on_path.erase(next);
+        }
+      }
+      segments_on_path.erase(h.segment);
+      path.pop_back();
+    }
+  };
+  for (const auto& [node, unused] : out_of) {
+    origin = node;
+    nodes_on_path = {node};
+    extend(extend, node);
+  }
+  return found;
+}
+
+// Where our walks leave the cycles CASSIE may have walked over the patch's
+// segments `seeds` (Departure).
+AstrayDetail departure(CurveGraph& graph, CycleSearcher& searcher, const std::set<int>& seeds, std::size_t curves,
+                       const CycleSearchParams& params) {
+  AstrayDetail out;
+  std::vector<Cycle> targets = cycles_over(graph, seeds, curves, 64, false);
+  if (targets.empty()) targets = cycles_over(graph, seeds, curves, 64, true);
+  if (targets.empty()) {
+    out.where = Departure::no_cycle;
+    return out;
+  }
+  std::map<int, std::vector<WalkTrace>> walked;
+  const WalkTrace* best = nullptr;
+  const Cycle* best_target = nullptr;
+  std::size_t best_start = 0, best_len = 0;
+  for (const Cycle& c : targets)
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      auto it = walked.find(c[j].segment);
+      if (it == walked.end()) {
+        it = walked.emplace(c[j].segment, std::vector<WalkTrace>{}).first;
+        searcher.search_segment(c[j].segment, &it->second);
+      }
+      for (const WalkTrace& t : it->second) {
+        std::size_t m = 0;
+        while (m < t.steps.size() && m < c.size() && t.steps[m] == c[(j + m) % c.size()]) ++m;
+        if (m > best_len) best_len = m, best = &t, best_target = &c, best_start = j;
+      }
+    }
+  out.length = best_target ? static_cast<int>(best_target->size()) : static_cast<int>(targets.front().size());
+  out.followed = static_cast<int>(best_len);
+  if (!best) {
+    out.where = Departure::no_start;
+    return out;
+  }
+  const Cycle& c = *best_target;
+  const HalfEdge wanted = c[(best_start + best_len) % c.size()];
+  const NodeId node = graph.from(wanted);
+  out.node = node;
+  if (const Node* n = graph.network().find_node(node)) out.position = n->position;
+  out.segments = static_cast<int>(graph.outgoing(node).size());
+  out.wanted = graph.segment(wanted.segment).curve;
+  const NodeFrame& f = searcher.frame(node);
+  out.max_offset = f.max_offset;
+  const Vec3 carried = best_len - 1 < best->arrivals.size() ? best->arrivals[best_len - 1] : Vec3::Zero();
+  if (f.defined && carried.norm() > 0.0) out.agreement = f.normal.dot(carried.normalized());
+  const bool took = best_len < best->steps.size();
+  const double cos_apart = took ? graph.direction(best->steps[best_len]).dot(graph.direction(wanted)) : 1.0;
+  if (took) {
+    out.taken = graph.segment(best->steps[best_len].segment).curve;
+    out.apart = std::acos(std::clamp(cos_apart, -1.0, 1.0));
+  }
+  if (took && cos_apart > params.tie_cos)
+    out.where = Departure::near_tie;
+  else if (out.segments == 2)
+    out.where = Departure::at_two;
+  else if (!f.defined)
+    out.where = Departure::at_undefined;
+  else if (f.sharp)
+    out.where = Departure::at_sharp;
+  else if (std::abs(out.agreement) < std::cos(std::numbers::pi / 3))  // item 24's |cos| < 0.5
+    out.where = Departure::at_crossing;
+  else
+    out.where = Departure::at_smooth;
+  return out;
+}
+
 }  // namespace
 
 MissingCycle classify_missing(const Network& network, const std::map<std::int64_t, CurveId>& curve_of,
-                              const StrokeSet& strokes, const CycleSearchParams& params, Departure* departure) {
-  if (departure) *departure = Departure::none;
+                              const StrokeSet& strokes, const CycleSearchParams& params, AstrayDetail* astray) {
+  if (astray) *astray = {};
   std::map<CurveId, std::int64_t> stroke_of;
   for (std::int64_t s : strokes) {
     const auto it = curve_of.find(s);
@@ -73,20 +190,8 @@ MissingCycle classify_missing(const Network& network, const std::map<std::int64_
     for (int seg : graph.segments_of(curve)) seeds.insert(seg);
   if (!closes_over(graph, stroke_of, seeds)) return MissingCycle::not_closed;
   std::optional<Cycle> found;
-  // The longest stay on the patch's curves of the walks that do not close.
-  std::size_t best_stay = 0;
-  std::optional<NodeId> left_at;
   for (int seed : seeds) {
-    std::vector<Cycle> traces;
-    const std::vector<Cycle> closed = searcher.search_segment(seed, departure ? &traces : nullptr);
-    for (const Cycle& t : traces) {
-      std::size_t i = 0;
-      while (i < t.size() && seeds.count(t[i].segment)) ++i;
-      if (i < best_stay || (i == best_stay && left_at)) continue;
-      best_stay = i;
-      left_at = i < t.size() ? std::optional<NodeId>(graph.from(t[i])) : std::nullopt;
-    }
-    for (const Cycle& c : closed) {
+    for (const Cycle& c : searcher.search_segment(seed)) {
       StrokeSet over;
       bool outside = false;
       for (const HalfEdge& h : c) {
@@ -103,16 +208,7 @@ MissingCycle classify_missing(const Network& network, const std::map<std::int64_
     if (found) break;
   }
   if (!found) {
-    if (departure) {
-      *departure = Departure::inside;
-      if (left_at) {
-        const NodeFrame& f = searcher.frame(*left_at);
-        *departure = graph.outgoing(*left_at).size() == 2 ? Departure::at_two
-                     : !f.defined                         ? Departure::at_undefined
-                     : f.sharp                            ? Departure::at_sharp
-                                                          : Departure::at_smooth;
-      }
-    }
+    if (astray) *astray = departure(graph, searcher, seeds, stroke_of.size(), params);
     return MissingCycle::not_found;
   }
   // Item 24: a segment already bounding two patches refuses the cycle (the
@@ -135,11 +231,14 @@ ReplayCauses& ReplayCauses::operator+=(const ReplayCauses& o) {
   miss_elsewhere += o.miss_elsewhere;
   miss_curve_absent += o.miss_curve_absent;
   miss_not_closed += o.miss_not_closed;
+  astray_near_tie += o.astray_near_tie;
   astray_at_two += o.astray_at_two;
-  astray_at_sharp += o.astray_at_sharp;
-  astray_at_smooth += o.astray_at_smooth;
   astray_at_undefined += o.astray_at_undefined;
-  astray_inside += o.astray_inside;
+  astray_at_sharp += o.astray_at_sharp;
+  astray_at_crossing += o.astray_at_crossing;
+  astray_at_smooth += o.astray_at_smooth;
+  astray_no_start += o.astray_no_start;
+  astray_no_cycle += o.astray_no_cycle;
   miss_not_found += o.miss_not_found;
   miss_refused_two += o.miss_refused_two;
   miss_not_searched += o.miss_not_searched;

@@ -5,6 +5,7 @@
 // our patches CASSIE did not make, is given one cause. The counts are what
 // the README's breakdown table prints (soapfilm_compare).
 #include <map>
+#include <optional>
 
 #include "cassie_session.hpp"
 #include "cycle_search.hpp"
@@ -21,18 +22,46 @@ enum class MissingCycle {
   not_searched,  // a walk closes over it and nothing refuses it: the upkeep never walked from there, or its mesh failed
 };
 
-// Where the walks over a cycle they do not close (not_found) go astray: the
-// walk staying longest on the patch's curves leaves them at a node of this
-// kind, or stops without leaving them (a dangling end, a segment walked twice).
-enum class Departure { none, at_two, at_sharp, at_smooth, at_undefined, inside };
+// Where the walks over a cycle they do not close (not_found) go astray. The
+// cycles CASSIE may have walked are the node-simple cycles of the patch's
+// curves through every one of its strokes (if there is none, the closed
+// walks through them using each segment once); of our walks (two from each
+// of their segments, item 25), the one following such a cycle longest from
+// its start leaves it at a node of this kind (checked in this order).
+enum class Departure {
+  none,
+  near_tie,         // the segment taken and the cycle's leave within tie_cos of each other (item 23's tie)
+  at_two,           // a two-segment node
+  at_undefined,     // a node with no fitted plane
+  at_sharp,         // a sharp node (item 23)
+  at_crossing,      // a smooth node whose fitted normal is more than 60° (as lines) from the normal carried
+                    // there: item 24's |cos| < 0.5 case, where the app turns in the carried normal's plane
+  at_smooth,        // another smooth node
+  no_start,         // no walk starts along any of them (their segments' start nodes have no fitted plane)
+  no_cycle,         // no closed walk over its curves' segments passes through every one of its strokes
+};
+
+// The node where the walk leaves the cycle (Departure), for tracing a case.
+struct AstrayDetail {
+  Departure where = Departure::none;
+  NodeId node = 0;
+  Vec3 position = Vec3::Zero();
+  int segments = 0;            // graph segments at the node
+  double max_offset = 0.0;     // item 23's max |n·t| there
+  double agreement = 0.0;      // carried normal · fitted normal (unit; 0 where either is missing)
+  std::optional<CurveId> taken, wanted;  // the curves of the segment taken (none: the walk stopped) and of the cycle's next one
+  double apart = 0.0;  // rad between the tangents leaving the node along those two (0 when the walk stopped)
+  int followed = 0, length = 0;   // segments of the cycle the walk followed, and its length
+};
 
 // Classifies a missing CASSIE patch over `strokes` on `network`, whose curve
 // of each CASSIE stroke id is `curve_of` (stroke ids absent there, or curves
 // no longer in the network, are absent). Walks two ways from every graph
 // segment of the patch's curves with `params` (CycleSearcher::search_segment).
+// For not_found, `astray` (when given) receives where the walks leave.
 MissingCycle classify_missing(const Network& network, const std::map<std::int64_t, CurveId>& curve_of,
                               const StrokeSet& strokes, const CycleSearchParams& params,
-                              Departure* departure = nullptr);
+                              AstrayDetail* astray = nullptr);
 
 struct ReplayCauses {
   // CASSIE patches not created at their event (sum = cassie_created - matched_created).
@@ -51,7 +80,8 @@ struct ReplayCauses {
   int end_extra_cassie_gone = 0;  // CASSIE made it automatically, but the user deleted it or a stroke of it is gone
   int end_extra_other = 0;
   // miss_not_found by where the walks go astray (Departure).
-  int astray_at_two = 0, astray_at_sharp = 0, astray_at_smooth = 0, astray_at_undefined = 0, astray_inside = 0;
+  int astray_near_tie = 0, astray_at_two = 0, astray_at_undefined = 0, astray_at_sharp = 0, astray_at_crossing = 0,
+      astray_at_smooth = 0, astray_no_start = 0, astray_no_cycle = 0;
   int missed_created() const {
     return miss_elsewhere + miss_curve_absent + miss_not_closed + miss_not_found + miss_refused_two + miss_not_searched;
   }

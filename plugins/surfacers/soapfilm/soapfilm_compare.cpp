@@ -1,5 +1,5 @@
 // soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
-//                  [--events CSV]
+//                  [--events CSV] [--astray]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -14,12 +14,16 @@
 // --param sets a plugin parameter (as in `sketchlab plugins soapfilm`);
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
-// Bézier joint meets an alive curve (CassieGraphParams::on_curve).
+// Bézier joint meets an alive curve (CassieGraphParams::on_curve); --astray
+// lists every CASSIE patch no walk closes over, with the node where the
+// walks leave it (replay_causes.hpp, Departure).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numbers>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -50,8 +54,24 @@ struct Row {
   std::string final_error, replay_error;
   FidelityReport final;
   ReplayFigures replay;
+  std::vector<AstrayMiss> astray;
   int events = 0;
 };
+
+const char* departure_name(Departure d) {
+  switch (d) {
+    case Departure::near_tie: return "near tie";
+    case Departure::at_two: return "two-segment node";
+    case Departure::at_undefined: return "undefined node";
+    case Departure::at_sharp: return "sharp node";
+    case Departure::at_crossing: return "smooth node, normals crossing";
+    case Departure::at_smooth: return "smooth node";
+    case Departure::no_start: return "no walk starts along it";
+    case Departure::no_cycle: return "no cycle";
+    case Departure::none: break;
+  }
+  return "–";
+}
 
 }  // namespace
 
@@ -61,6 +81,7 @@ int main(int argc, char** argv) {
   std::map<std::string, ParamValue> given;
   ReplayOptions options;
   std::string events_csv;
+  bool list_astray = false;
   const std::vector<ParamSpec> specs = soapfilm_param_specs();
   bool dir_given = false;
   try {
@@ -76,9 +97,11 @@ int main(int argc, char** argv) {
         options.user_patch_edits = false;
       } else if (a == "--events" && i + 1 < argc) {
         events_csv = argv[++i];
+      } else if (a == "--astray") {
+        list_astray = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--events CSV]\n";
+                     "[--meets M] [--events CSV] [--astray]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
@@ -128,6 +151,7 @@ int main(int argc, char** argv) {
       }
       const ReplayResult r = replay_cassie_session(session, params, options);
       row.replay = r.figures;
+      row.astray = r.astray;
       row.events = static_cast<int>(r.events.size());
       for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
       for (std::size_t i = 0; i < r.events.size(); ++i) {
@@ -228,6 +252,28 @@ int main(int argc, char** argv) {
             << ratio(total_replay.rebuilt_found, total_replay.cassie_final) << " | " << total_replay.rebuilt_ours
             << " |\n\n";
 
+  if (list_astray) {
+    // One row per CASSIE patch no walk closes over (replay_causes.hpp).
+    std::cout << "| session | event | time (s) | strokes | walks leave at | node | position (m) | segments "
+                 "| max \\|n·t\\| | carried · fitted | stroke taken | stroke of the cycle | between them (°) | followed |\n"
+              << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows)
+      for (const AstrayMiss& m : r.astray) {
+        std::string strokes;
+        for (std::int64_t s : m.strokes) strokes += (strokes.empty() ? "" : " ") + std::to_string(s);
+        char pos[96];
+        std::snprintf(pos, sizeof pos, "%.3f %.3f %.3f", m.at.position.x(), m.at.position.y(), m.at.position.z());
+        char figs[64];
+        std::snprintf(figs, sizeof figs, "%.3f | %.3f", m.at.max_offset, m.at.agreement);
+        std::cout << "| " << r.session << " | " << m.group << " | " << m.time << " | " << strokes << " | "
+                  << departure_name(m.at.where) << " | " << m.at.node << " | " << pos << " | " << m.at.segments << " | "
+                  << figs << " | " << (m.taken < 0 ? std::string("stopped") : std::to_string(m.taken)) << " | "
+                  << m.wanted << " | " << std::lround(m.at.apart * 180.0 / std::numbers::pi) << " | " << m.at.followed
+                  << "/" << m.at.length << " |\n";
+      }
+    std::cout << "\n";
+  }
+
   auto line = [](const std::string& n, double v, const char* unit) { std::cout << n << ' ' << v << ' ' << unit << '\n'; };
   line("final.cassie_automatic", total_final.cassie_automatic, "patches");
   line("final.found", total_final.found, "patches");
@@ -256,11 +302,14 @@ int main(int argc, char** argv) {
   line("replay.miss_curve_absent", why.miss_curve_absent, "patches");
   line("replay.miss_not_closed", why.miss_not_closed, "patches");
   line("replay.miss_not_found", why.miss_not_found, "patches");
+  line("replay.astray_near_tie", why.astray_near_tie, "patches");
   line("replay.astray_at_two", why.astray_at_two, "patches");
-  line("replay.astray_at_sharp", why.astray_at_sharp, "patches");
-  line("replay.astray_at_smooth", why.astray_at_smooth, "patches");
   line("replay.astray_at_undefined", why.astray_at_undefined, "patches");
-  line("replay.astray_inside", why.astray_inside, "patches");
+  line("replay.astray_at_sharp", why.astray_at_sharp, "patches");
+  line("replay.astray_at_crossing", why.astray_at_crossing, "patches");
+  line("replay.astray_at_smooth", why.astray_at_smooth, "patches");
+  line("replay.astray_no_start", why.astray_no_start, "patches");
+  line("replay.astray_no_cycle", why.astray_no_cycle, "patches");
   line("replay.miss_refused_two", why.miss_refused_two, "patches");
   line("replay.miss_not_searched", why.miss_not_searched, "patches");
   line("replay.extra_elsewhere", why.extra_elsewhere, "patches");

@@ -42,6 +42,11 @@ struct PrecisionRecall {
 //     track (matching by source stroke)
 //   gt_distance_mean_m, gt_distance_max_m: output curves vs the intended
 //     ("ground_truth" track) curves, raw
+//   gt_shape_distance_mean_m, gt_shape_coverage_mean_m: the output against
+//     the intended shape as a whole: each output sample to the nearest
+//     intended curve of any live stroke, and each intended sample to the
+//     nearest output curve (a curve built from several strokes is scored
+//     against all of them)
 //   gt_distance_mean_aligned_eye_scale_m, gt_distance_max_aligned_eye_scale_m,
 //   gt_eye_scale: the same after the best uniform scaling of the output about
 //     the camera eye (gt_eye_scale = that factor), which leaves every pixel of

@@ -77,6 +77,21 @@ TEST_CASE("Merge test (eq. 1): along the curve yes, across it no", "[justdrawit]
   CHECK_FALSE(merge_test(across, cumulative(across), curve, false, d));
   const Points2 far = line2({50, 40}, {250, 40}, 120);
   CHECK_FALSE(merge_test(far, cumulative(far), curve, false, d));
+  // A wobbling pen (1.5 px, 8 px wavelength: 1.3 px of arclength per px
+  // moved) still travels along the curve; leaving the curve's end at 30° it
+  // does not, however close its start.
+  Points2 wobbly;
+  for (int i = 0; i <= 1000; ++i) {
+    const double x = 250 + 0.25 * i;
+    wobbly.emplace_back(x, 1.5 * std::sin(2 * std::numbers::pi * x / 8));
+  }
+  const auto mw = merge_test(wobbly, cumulative(wobbly), curve, false, d);
+  REQUIRE(mw);
+  CHECK(mw->overhang);
+  CHECK(cumulative(wobbly)[40] > 1.25 * 10);  // the arclength the wobble adds
+  const double a30 = std::numbers::pi / 6;
+  const Points2 leaving = line2({296, 0}, Vec2(296, 0) + 200 * Vec2(std::cos(a30), std::sin(a30)), 120);
+  CHECK_FALSE(merge_test(leaving, cumulative(leaving), curve, false, d));
 }
 
 TEST_CASE("Join test (eq. 2): in-line gaps join, bent or far ones do not", "[justdrawit][join]") {

@@ -284,6 +284,33 @@ TEST_CASE("Oversketch from a second view changes depth only where it should", "[
   CHECK(kept == outside);
 }
 
+TEST_CASE("Oversketching a closed curve from its seam keeps the whole loop", "[justdrawit][oversketch][close]") {
+  // A circle of radius 0.2 m in the view plane z = 0, closed by running on
+  // over its start; then oversketched whole from a second view, starting and
+  // ending at its seam. The stroke's start merges across the seam (curve
+  // arclength from near the end on past 0): the middle of that merge is at
+  // the seam, not halfway round (which cut a chord across the loop).
+  Drawer dr;
+  std::vector<Vec3> circle;
+  for (int i = 0; i <= 220; ++i) {
+    const double a = 2.2 * std::numbers::pi * i / 200;
+    circle.emplace_back(0.2 * std::cos(a), 0.2 * std::sin(a), 0);
+  }
+  REQUIRE(decision(dr.draw(front, to_pixels(front, circle))) == new_closed);
+  const Points3 loop = dr.points(1);
+  const double a = 50 * std::numbers::pi / 180;
+  const View side = ortho_view(Vec3(3 * std::sin(a), 0, 3 * std::cos(a)));
+  Points3 around;
+  for (std::size_t i = 0; i < loop.size(); i += 4) around.push_back(loop[i]);
+  around.push_back(loop.back());
+  REQUIRE(decision(dr.draw(side, to_pixels(side, around))) == oversketch);
+  REQUIRE(dr.net().curves().size() == 1);
+  CHECK(dr.net().curves().begin()->second.curve.closed);
+  double worst = 0;
+  for (const Vec3& p : dr.points(1)) worst = std::max({worst, std::abs(p.head<2>().norm() - 0.2), std::abs(p.z())});
+  CHECK(worst < 2e-3);
+}
+
 TEST_CASE("Extending from the front extrapolates the curve's depth", "[justdrawit][depth]") {
   // A curve leaving the z = 0 plane linearly (dz/dx = 0.5), seeded directly.
   Sketch sketch;

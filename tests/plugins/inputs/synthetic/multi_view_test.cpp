@@ -84,3 +84,33 @@ TEST_CASE("a JustDrawIt draw plane is refused for a curve that is not planar", "
   CHECK_THROWS_WITH(placed_draw_plane(twisted, Vec3(5, 5, 5)), Catch::Contains("planar"));
   CHECK_THROWS_WITH(placed_draw_plane(make_line(Vec3(0, 0, 0), Vec3(1, 0, 0)), Vec3(3, 0, 0)), Catch::Contains("end-on"));
 }
+
+TEST_CASE("a JustDrawIt session draws a closed curve from a free stretch, on over its start", "[synthetic][multi_view]") {
+  const Curve rim = make_circle(Vec3(0, 1, 0), Vec3::UnitX(), -Vec3::UnitZ(), 0.1);
+  const Curve from = loop_from(rim, loop_start);
+  CHECK(from.closed);
+  CHECK(validate(from).empty());
+  CHECK((from.control_points.front() - evaluate(rim, loop_start)).norm() < 1e-12);
+  const Curve drawn = closing_loop(rim);
+  CHECK_FALSE(drawn.closed);
+  CHECK(validate(drawn).empty());
+  // Once round the same points, then on over the start by closing_overlap.
+  for (int i = 0; i <= 100; ++i) CHECK(closest_point(rim, evaluate(drawn, drawn.t_max() * i / 100.0)).distance < 1e-9);
+  CHECK((evaluate(drawn, from.t_max()) - from.control_points.front()).norm() < 1e-12);
+  CHECK((drawn.control_points.back() - evaluate(from, closing_overlap * from.t_max())).norm() < 1e-12);
+  CHECK_THROWS_WITH(closing_loop(make_line(Vec3(0, 0, 0), Vec3(1, 0, 0))), Catch::Contains("closed"));
+
+  // In the session: the mug's closed curves are drawn so in the first view.
+  SynthesisParams p = support::perfect("mug", Modality::tablet);
+  p.style = DrawingStyle::justdrawit;
+  const auto strokes = support::drawn(synthesize_session(p));
+  const Vec3 eye1 = eye_position(*strokes.front().stroke.view);
+  int loops = 0;
+  for (const auto& d : strokes) {
+    if (!d.truth.closed || (eye_position(*d.stroke.view) - eye1).norm() > 1e-12) continue;
+    ++loops;
+    const Vec3 first = world_to_pixel(*d.stroke.view, evaluate(d.truth, loop_start));
+    CHECK((d.stroke.samples.front().position.head<2>() - first.head<2>()).norm() < 1e-6);
+  }
+  CHECK(loops == 2);
+}

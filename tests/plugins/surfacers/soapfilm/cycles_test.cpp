@@ -68,6 +68,18 @@ TEST_CASE("node frame: plane through the centroid, sharp nodes, collinear fallba
   REQUIRE(f.defined);
   CHECK(f.from_opposite);
   CHECK(std::abs(f.normal.z()) == Approx(1.0));
+  CHECK_FALSE(f.sharp);
+  // The sharp test is on the tangents even then (item 23: max |n·t| > 0.5):
+  // nearly collinear tangents along z (|t1 × t2| = 0.05) with the opposite
+  // nodes in the xy plane leave the fitted plane by |n·t| = 1: sharp, though
+  // the fitted directions themselves lie in it.
+  const Vec3 t2 = Vec3(0.05, 0.0, -1.0).normalized();
+  f = soapfilm::fit_node_frame({Vec3::UnitZ(), t2}, {Vec3(0.8, 0.6, 0), Vec3(-0.8, 0.6, 0)}, params);
+  REQUIRE(f.defined);
+  CHECK(f.from_opposite);
+  CHECK(std::abs(f.normal.z()) == Approx(1.0));
+  CHECK(std::abs(f.max_offset - 1.0) < 1e-12);
+  CHECK(f.sharp);
   // ... undefined when those are collinear too.
   CHECK_FALSE(soapfilm::fit_node_frame({Vec3::UnitX(), -Vec3::UnitX()}, {Vec3::UnitX(), -Vec3::UnitX()}, params).defined);
   // The thesis's extra RMS test, when asked for.

@@ -50,6 +50,18 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
     CHECK(rf.causes.extra_created() == rf.ours_created - rf.matched_created);
     CHECK(rf.causes.missed_end() == rf.cassie_final - rf.matched_final);
     CHECK(rf.causes.extra_end() == rf.ours_final - rf.matched_final);
+    // ... and each one no walk closes over, exactly one place where the
+    // walks leave it (replay_causes.hpp, Departure), listed once.
+    const soapfilm::ReplayCauses& c = rf.causes;
+    CHECK(c.astray_near_tie + c.astray_at_two + c.astray_at_undefined + c.astray_at_sharp + c.astray_at_crossing +
+              c.astray_at_smooth + c.astray_no_start + c.astray_no_cycle ==
+          c.miss_not_found);
+    CHECK(static_cast<int>(r.astray.size()) == c.miss_not_found);
+    for (const soapfilm::AstrayMiss& m : r.astray) {
+      const bool at_node = m.at.where != soapfilm::Departure::no_start && m.at.where != soapfilm::Departure::no_cycle;
+      CHECK(at_node == (m.at.node != 0));
+      if (at_node) CHECK(m.at.followed <= m.at.length);
+    }
     replay += r.figures;
   }
   CHECK(sessions == 18);
@@ -64,24 +76,26 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.cassie_created == 1727);
   CHECK(replay.cassie_broken == 362);
   // Measured: final 356/479 (74.3 %), precision 356/505 (70.5 %); replay
-  // created 1411/1727 (81.7 %), precision 79.9 %; at the end 407/480
-  // (84.8 %), precision 86.4 %; 320 of CASSIE's 362 breaks made by us at
+  // created 1412/1727 (81.8 %), precision 79.9 %; at the end 408/480
+  // (85.0 %), precision 86.4 %; 320 of CASSIE's 362 breaks made by us at
   // the same event. The whole-network search on the replay's own final
   // network: 385/480.
   CHECK(final.found >= 352);
   CHECK(double(final.found) / final.ours >= 0.70);
   CHECK(replay.recall_created() >= 0.81);
   CHECK(replay.precision_created() >= 0.79);
-  CHECK(replay.recall_final() >= 0.84);
+  CHECK(replay.recall_final() >= 0.845);
   CHECK(replay.precision_final() >= 0.86);
   CHECK(replay.matched_broken >= 315);
   CHECK(replay.rebuilt_found >= 380);
   // The replay's main causes of disagreement (README.md, "Causes"):
   // measured 86 CASSIE patches whose curves hold no closed path in our graph
-  // and 87 that one does but no walk follows, 20 broken by a later crossing
-  // CASSIE did not break; fewer is better, more is a regression.
+  // and 87 that one does but no walk follows (20 leaving it at a sharp node,
+  // 28 at a smooth node whose normals cross, 27 at another smooth node), 20
+  // broken by a later crossing CASSIE did not break; fewer is better, more
+  // is a regression.
   CHECK(replay.causes.miss_not_closed <= 90);
-  CHECK(replay.causes.miss_not_found <= 92);
+  CHECK(replay.causes.miss_not_found <= 90);
   CHECK(replay.causes.end_removed_by_crossing <= 25);
   // Most extra cycles on the final networks are patches CASSIE's users had
   // to add by hand (the original missed them).

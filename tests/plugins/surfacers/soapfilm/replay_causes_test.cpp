@@ -60,10 +60,19 @@ TEST_CASE("a missing CASSIE patch is classified by what stops it on our network"
   const soapfilm::StrokeSet belt = {edge(0, 1), edge(1, 3), edge(3, 7), edge(7, 6), edge(6, 4), edge(4, 0)};
   REQUIRE(belt.size() == 6);
   REQUIRE(!belt.count(-1));
-  soapfilm::Departure astray = soapfilm::Departure::none;
+  soapfilm::AstrayDetail astray;
   CHECK(soapfilm::classify_missing(s.network(), curve_of, belt, params, &astray) == MissingCycle::not_found);
-  // Every corner is a three-edge corner the walks turn at, into a face.
-  CHECK(astray != soapfilm::Departure::none);
+  // Every corner is a sharp three-edge corner (item 23: |n·t| = 0.577); the
+  // belt shares two consecutive edges with each face it borders, so the walk
+  // following it longest turns into that face after two of its edges.
+  CHECK(astray.where == soapfilm::Departure::at_sharp);
+  CHECK(astray.segments == 3);
+  CHECK(astray.max_offset == Approx(1.0 / std::sqrt(3.0)));
+  CHECK(astray.length == 6);
+  CHECK(astray.followed == 2);
+  REQUIRE(astray.taken);
+  REQUIRE(astray.wanted);
+  CHECK(*astray.taken != *astray.wanted);
 
   // The bottom face deleted by hand: its edges bound one patch each, a walk
   // closes over it and nothing refuses it.
