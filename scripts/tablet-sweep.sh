@@ -6,7 +6,8 @@
 # line per (model, style, noise, stack): the median over the seeds of the
 # ground-truth figures of metrics.csv (aligned: gt_distance_mean_aligned_eye_scale_m,
 # written for one-view sessions, raw: gt_distance_mean_m, and the shape
-# pair gt_shape_distance_mean_m / gt_shape_coverage_mean_m, in mm;
+# pair gt_shape_distance_mean_m / gt_shape_coverage_mean_m, eye-scaled like
+# aligned where the session is one view, in mm;
 # parallel/perpendicular/coincident recalls; dangling endpoint ratio).
 #
 #   scripts/tablet-sweep.sh OUT
@@ -57,7 +58,12 @@ awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_shap
     split($col["recording"], r, "_")
     group = r[1] " " r[2] " " substr(r[3], 2) " " $col["stack"]
     if (!(group in seen)) { seen[group] = 1; order[++ng] = group }
-    for (i = 1; i <= nk; ++i) if ((k[i] in col) && $col[k[i]] != "") v[group, i] = v[group, i] " " $col[k[i]]
+    for (i = 1; i <= nk; ++i) {
+      key = k[i]
+      # The shape pair eye-scaled where the session is one view (as aligned_mm).
+      if (key ~ /^gt_shape_/) { a = key; sub(/_m$/, "_aligned_eye_scale_m", a); if ((a in col) && $col[a] != "") key = a }
+      if ((key in col) && $col[key] != "") v[group, i] = v[group, i] " " $col[key]
+    }
   }
   END {
     for (g = 1; g <= ng; ++g) {

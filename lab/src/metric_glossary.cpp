@@ -47,6 +47,8 @@ const std::map<std::string, MetricInfo>& fixed() {
       {"gt_distance_max_aligned_eye_scale_m", length("vs ground truth", "dist. max (eye-scaled)", "Largest distance after that scaling.", truth + 4)},
       {"gt_shape_distance_mean_m", length("vs ground truth", "shape dist.", "Mean distance of the output curves to the nearest intended curve of any stroke, raw: a curve a corrector built from several strokes (JustDrawIt's extension of a curve by one drawn in line, §4.2) is scored against all of them, where dist. mean takes its last stroke's only.", truth + 6)},
       {"gt_shape_coverage_mean_m", length("vs ground truth", "shape coverage", "Mean distance of the intended curves to the nearest output curve, raw: what the output misses (a curve not made, or made short) counts here.", truth + 7)},
+      {"gt_shape_distance_mean_aligned_eye_scale_m", length("vs ground truth", "shape dist. (eye-scaled)", "The shape distance after the eye-scale alignment of the eye-scaled distances (single-view 2D input).", truth + 8)},
+      {"gt_shape_coverage_mean_aligned_eye_scale_m", length("vs ground truth", "shape coverage (eye-scaled)", "The shape coverage after that alignment.", truth + 9)},
       {"gt_eye_scale", {"vs ground truth", "eye scale", "×", 1.0, "The scaling factor about the eye used for the eye-scaled distances.", truth + 5}},
   };
   return m;

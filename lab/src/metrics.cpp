@@ -292,12 +292,17 @@ std::optional<Vec3> single_eye(const Sketch& sketch, const std::vector<StrokeId>
 // squared distances of e + s(p − e) to the intended curves is found by
 // alternating closest points and the closed-form s = Σ(p−e)·(q−e) / Σ|p−e|²
 // (an ICP restricted to this one-parameter group), started from the ratio of
-// the mean distances to the eye.
-void eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, Curve>& truth,
-                                const std::vector<StrokeId>& strokes, const MetricsOptions& o,
-                                CaseMetrics& m) {
+// the mean distances to the eye. Returns the eye and the scale when they
+// were written.
+struct EyeScale {
+  Vec3 eye;
+  double scale;
+};
+std::optional<EyeScale> eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, Curve>& truth,
+                                                   const std::vector<StrokeId>& strokes, const MetricsOptions& o,
+                                                   CaseMetrics& m) {
   const auto eye = single_eye(sketch, strokes);
-  if (!eye || strokes.empty()) return;
+  if (!eye || strokes.empty()) return std::nullopt;
   std::vector<std::pair<Vec3, const Curve*>> points;  // output sample - eye, its intended curve
   double ours_range = 0, truth_range = 0;
   for (StrokeId s : strokes) {
@@ -308,7 +313,7 @@ void eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, C
     }
     for (const Vec3& q : sample_by_arclength(gt, o.resample)) truth_range += (q - *eye).norm();
   }
-  if (!(ours_range > 0) || !std::isfinite(ours_range)) return;
+  if (!(ours_range > 0) || !std::isfinite(ours_range)) return std::nullopt;
   double scale = truth_range / ours_range;
   for (int iteration = 0; iteration < 50; ++iteration) {
     double num = 0, den = 0;
@@ -331,6 +336,7 @@ void eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, C
   m.values["gt_distance_mean_aligned_eye_scale_m"] = sum / double(points.size());
   m.values["gt_distance_max_aligned_eye_scale_m"] = max;
   m.values["gt_eye_scale"] = scale;
+  return EyeScale{*eye, scale};
 }
 
 // The output against the intended shape as a whole (a Chamfer pair), for
@@ -339,14 +345,25 @@ void eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, C
 // intended curves drawn in line, and gt_distance_mean_m scores it against its
 // last stroke's only. Accuracy: each output sample to the nearest intended
 // curve of any live stroke; coverage: each intended sample to the nearest
-// output curve, so that a missing or short curve still counts.
+// output curve, so that a missing or short curve still counts. With
+// `aligned`, the output scaled about the eye first (as the eye-scaled
+// distance), a Bézier curve being scaled with its control points.
 void ground_truth_shape_metrics(const Sketch& sketch, const std::map<StrokeId, Curve>& truth,
-                                const MetricsOptions& o, CaseMetrics& m) {
+                                const MetricsOptions& o, const std::optional<EyeScale>& aligned, CaseMetrics& m) {
   std::vector<const Curve*> intended, output;
+  std::vector<Curve> scaled;
   for (StrokeId s : live_strokes(sketch))
     if (auto it = truth.find(s); it != truth.end()) intended.push_back(&it->second);
   for (const auto& [id, c] : sketch.network.curves())
-    if (truth.count(c.source_stroke)) output.push_back(&c.curve);
+    if (truth.count(c.source_stroke)) {
+      if (!aligned) {
+        output.push_back(&c.curve);
+        continue;
+      }
+      Curve& copy = scaled.emplace_back(c.curve);
+      for (Vec3& p : copy.control_points) p = aligned->eye + aligned->scale * (p - aligned->eye);
+    }
+  for (const Curve& c : scaled) output.push_back(&c);
   if (intended.empty() || output.empty()) return;
   const auto mean_distance = [&](const std::vector<const Curve*>& from, const std::vector<const Curve*>& to) {
     double sum = 0;
@@ -360,8 +377,9 @@ void ground_truth_shape_metrics(const Sketch& sketch, const std::map<StrokeId, C
       }
     return count ? sum / double(count) : 0.0;
   };
-  m.values["gt_shape_distance_mean_m"] = mean_distance(output, intended);
-  m.values["gt_shape_coverage_mean_m"] = mean_distance(intended, output);
+  const std::string unit = aligned ? "_aligned_eye_scale_m" : "_m";
+  m.values["gt_shape_distance_mean" + unit] = mean_distance(output, intended);
+  m.values["gt_shape_coverage_mean" + unit] = mean_distance(intended, output);
 }
 
 void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMetrics& m) {
@@ -389,8 +407,9 @@ void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMe
     m.values["gt_distance_mean_m"] = sum / double(count);
     m.values["gt_distance_max_m"] = max;
   }
-  eye_scale_aligned_distance(sketch, refs->second, strokes, o, m);
-  ground_truth_shape_metrics(sketch, refs->second, o, m);
+  const auto aligned = eye_scale_aligned_distance(sketch, refs->second, strokes, o, m);
+  ground_truth_shape_metrics(sketch, refs->second, o, std::nullopt, m);
+  if (aligned) ground_truth_shape_metrics(sketch, refs->second, o, aligned, m);
 
   // Relations: intended ones from the track, detected ones measured on the
   // output over every pair (or single stroke for planarity).

@@ -95,11 +95,15 @@ TEST_CASE("the eye-scale alignment removes exactly the scale one view leaves ope
   CHECK(m.values.at("gt_distance_mean_m") > 0.1);
   CHECK(m.values.at("gt_distance_max_aligned_eye_scale_m") < 1e-9);
   CHECK(m.values.at("gt_eye_scale") == Approx(2.5).epsilon(1e-9));
+  CHECK(m.values.at("gt_shape_distance_mean_m") > 0.1);
+  CHECK(m.values.at("gt_shape_distance_mean_aligned_eye_scale_m") < 1e-9);
+  CHECK(m.values.at("gt_shape_coverage_mean_aligned_eye_scale_m") < 1e-9);
 
   // Two eye positions fix the scale: no aligned figure, the raw one stays.
   const CaseMetrics two = compute_metrics(eye_scaled_case(0.4, true));
   CHECK(two.values.count("gt_distance_mean_m") == 1);
   CHECK(two.values.count("gt_distance_mean_aligned_eye_scale_m") == 0);
+  CHECK(two.values.count("gt_shape_distance_mean_aligned_eye_scale_m") == 0);
 }
 
 namespace {

@@ -46,7 +46,8 @@ struct PrecisionRecall {
 //     the intended shape as a whole: each output sample to the nearest
 //     intended curve of any live stroke, and each intended sample to the
 //     nearest output curve (a curve built from several strokes is scored
-//     against all of them)
+//     against all of them); with _aligned_eye_scale_m instead of _m, the
+//     same after the eye-scale alignment below
 //   gt_distance_mean_aligned_eye_scale_m, gt_distance_max_aligned_eye_scale_m,
 //   gt_eye_scale: the same after the best uniform scaling of the output about
 //     the camera eye (gt_eye_scale = that factor), which leaves every pixel of
