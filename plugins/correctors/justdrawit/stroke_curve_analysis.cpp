@@ -303,10 +303,21 @@ std::optional<EndMatch> closes_on_itself(const Points2& stroke, double d) {
   const auto cum = cumulative(stroke);
   const double l = cum.back();
   if (!(l > 4 * d)) return std::nullopt;
-  const Projected head = make_projected(slice(stroke, cum, 0.0, l / 3), false);
-  if (auto m = merge_test(stroke, cum, head, true, d); m && m->dir > 0) return m;
-  if (auto j = join_test(stroke, cum, head, true, d); j && j->at_curve_start) return j;
-  return std::nullopt;
+  // "Check if each end of the stroke merges or joins with the other end"
+  // (§4.3 (1)): the end against the first third, the start against the last
+  // third, each running on along it; q_m averages the two (§4.3, final score).
+  const auto meets = [&](double from, double to, bool at_end) -> std::optional<EndMatch> {
+    const Projected part = make_projected(slice(stroke, cum, from, to), false);
+    if (auto m = merge_test(stroke, cum, part, at_end, d); m && m->dir > 0) return m;
+    if (auto j = join_test(stroke, cum, part, at_end, d); j && j->at_curve_start == at_end) return j;
+    return std::nullopt;
+  };
+  std::optional<EndMatch> end = meets(0.0, l / 3, true);
+  if (!end) return std::nullopt;
+  const std::optional<EndMatch> start = meets(2 * l / 3, l, false);
+  if (!start) return std::nullopt;
+  end->score = 0.5 * (end->score + start->score);
+  return end;
 }
 
 }  // namespace sketchlab::justdrawit

@@ -80,8 +80,9 @@ std::optional<CurveMatch> match_type(const EndMatch& start, const EndMatch& end,
 // Full analysis of a stroke (2D, pixels) against one projected curve.
 std::optional<CurveMatch> analyze(const Points2& stroke, const Projected& curve, double d);
 
-// §4.3 (1): the stroke closes on itself (its end merges with or joins its
-// start). Returns the end match of the end against the stroke's first third.
+// §4.3 (1): the stroke closes on itself: its end merges with or joins its
+// first third, and its start its last third. Returns the end's match against
+// the first third, its score the mean of both ends' q_m.
 std::optional<EndMatch> closes_on_itself(const Points2& stroke, double d);
 
 // Join score q_m from eq. 3–5.

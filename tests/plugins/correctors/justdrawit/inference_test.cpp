@@ -156,6 +156,24 @@ TEST_CASE("Close: extend-and-close and a new closed stroke, not when open", "[ju
     REQUIRE(dr.net().curves().size() == 1);
     CHECK(dr.net().curves().begin()->second.curve.closed);
   }
+  SECTION("a loop ending back on its own stem stays open: its start meets nothing") {
+    // §4.3 (1) closes a stroke when *each* end merges or joins with the
+    // other. This one's end runs 150 px along its first 400 px (a merge
+    // with its start's third), but its start is 100 px from the stroke's
+    // last third and points away from it (neither merge nor join).
+    Drawer dr;
+    std::vector<Vec2> s;
+    const std::vector<Vec2> corners = {{300, 500}, {700, 500}, {750, 600}, {700, 700},
+                                       {400, 700}, {350, 600}, {400, 500}, {550, 500}};
+    for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+      std::vector<Vec2> leg = line_px(corners[k], corners[k + 1]);
+      if (k > 0) leg.erase(leg.begin());
+      s.insert(s.end(), leg.begin(), leg.end());
+    }
+    CHECK(decision(dr.draw(front, s)) == new_curve);
+    REQUIRE(dr.net().curves().size() == 1);
+    CHECK_FALSE(dr.net().curves().begin()->second.curve.closed);
+  }
   SECTION("an open arc stays open") {
     Drawer dr;
     std::vector<Vec2> arc;
