@@ -2,6 +2,7 @@
 // CASSIE app item 22).
 #include <catch2/catch.hpp>
 
+#include "cassie_graph.hpp"
 #include "cassie_graph_edit.hpp"
 
 using namespace sketchlab;
@@ -63,4 +64,55 @@ TEST_CASE("a curve meeting an old curve reuses the nearest of its nodes within d
     CHECK((start->position - Vec3(right ? 0.523 : 0.5, 0, 0)).norm() < 1e-12);
     CHECK(start->incidences.size() == 3);  // A, the curve that made it, B
   }
+}
+
+TEST_CASE("a node a deleted curve left inside another is reused only with reuse_left_over", "[soapfilm]") {
+  // A, then C ending on A at x = 0.5 (a node there), then C deleted: the node
+  // stays on A alone, no graph node. B then ends on A 7 mm from it (within δ,
+  // beyond 0.5δ), as teapot's stroke 94 next to what strokes 44/45 left.
+  auto build = [](bool reuse_left_over) {
+    soapfilm::CassieGraphParams params;
+    params.reuse_left_over = reuse_left_over;
+    Network net;
+    net.apply(soapfilm::cassie_graph_edit(net, {{1, straight({0, 0, 0}, {1, 0, 0})}}, params));
+    net.apply(soapfilm::cassie_graph_edit(net, {{2, straight({0.5, 0, 0}, {0.5, 1, 0})}}, params));
+    Edit del;
+    for (const auto& [id, c] : net.curves())
+      if (c.source_stroke == 2) del.curves_removed.push_back(id);
+    net.apply(del);
+    net.apply(soapfilm::cassie_graph_edit(net, {{3, straight({0.507, 0, 0}, {0.507, -1, 0})}}, params));
+    return net;
+  };
+  auto start_of_b = [](const Network& net) {
+    for (const auto& [id, c] : net.curves())
+      if (c.source_stroke == 3) return net.find_node(net.segments_of(id).front().node0);
+    return static_cast<const Node*>(nullptr);
+  };
+  // CASSIE's graph: the node where B meets A (its exported final graphs).
+  Network cassie;
+  cassie.apply(soapfilm::cassie_graph_edit(cassie, {{1, straight({0, 0, 0}, {1, 0, 0})}}));
+  cassie.apply(soapfilm::cassie_graph_edit(cassie, {{3, straight({0.507, 0, 0}, {0.507, -1, 0})}}));
+  REQUIRE(cassie.nodes().size() == 4);
+
+  const Network reused = build(true);
+  const Node* n = start_of_b(reused);
+  REQUIRE(n != nullptr);
+  CHECK((n->position - Vec3(0.5, 0, 0)).norm() < 1e-12);
+  CHECK(n->incidences.size() == 2);  // A and B
+  soapfilm::NodeAgreement a = soapfilm::compare_graph_nodes(cassie, reused);
+  CHECK(a.cassie == 4);
+  CHECK(a.ours == 4);
+  CHECK(a.cassie_matched == 3);
+  CHECK(a.ours_matched == 3);
+
+  const Network fresh = build(false);
+  n = start_of_b(fresh);
+  REQUIRE(n != nullptr);
+  CHECK((n->position - Vec3(0.507, 0, 0)).norm() < 1e-12);
+  CHECK(n->incidences.size() == 2);
+  CHECK(fresh.nodes().size() == 5);  // the left-over one stays, no graph node
+  a = soapfilm::compare_graph_nodes(cassie, fresh);
+  CHECK(a.ours == 4);
+  CHECK(a.cassie_matched == 4);
+  CHECK(a.ours_matched == 4);
 }
