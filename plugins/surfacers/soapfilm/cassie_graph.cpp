@@ -189,7 +189,8 @@ NodeAgreement compare_graph_nodes(const Network& cassie, const Network& ours, do
   for (const auto& [id, n] : cassie.nodes()) {
     const std::vector<NodeHit> hits = ours.nodes_near(n.position, tolerance);
     ++a.cassie;
-    a.cassie_matched += std::any_of(hits.begin(), hits.end(), [&](const NodeHit& h) { return graph.is_graph_node(h.node); });
+    a.cassie_matched +=
+        std::any_of(hits.begin(), hits.end(), [&](const NodeHit& h) { return graph.is_graph_node(h.node); });
   }
   for (const auto& [id, n] : ours.nodes()) {
     if (!graph.is_graph_node(id)) continue;

@@ -53,7 +53,8 @@ class Overlay {
     };
     const CurveGraph graph(*network_);
     for (const NodeHit& h : network_->nodes_near(p, r))
-      if (!nodes_.count(h.node) && (left_over || graph.is_graph_node(h.node))) consider(*network_->find_node(h.node));
+      if (!nodes_.count(h.node) && (left_over || graph.is_graph_node(h.node)))
+        consider(*network_->find_node(h.node));
     for (const auto& [id, n] : nodes_) consider(n);
     return best;
   }

@@ -156,7 +156,8 @@ int main(int argc, char** argv) {
       }
       const ReplayResult r = replay_cassie_session(session, params, options);
       row.replay = r.figures;
-      if (row.has_graph) row.nodes = compare_graph_nodes(load_cassie_network(graph).network, r.network);
+      if (row.has_graph && row.final_error.empty())
+        row.nodes = compare_graph_nodes(load_cassie_network(graph).network, r.network);
       row.astray = r.astray;
       row.events = static_cast<int>(r.events.size());
       for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";

@@ -16,6 +16,16 @@ Curve straight(const Vec3& a, const Vec3& b) {
   return c;
 }
 
+// The node where the curve of `stroke` starts, when it is one segment.
+const Node* start_node(const Network& net, StrokeId stroke) {
+  for (const auto& [id, c] : net.curves())
+    if (c.source_stroke == stroke) {
+      const std::vector<Segment> pieces = net.segments_of(id);
+      return pieces.size() == 1 ? net.find_node(pieces.front().node0) : nullptr;
+    }
+  return nullptr;
+}
+
 }  // namespace
 
 TEST_CASE("a curve ending on an old curve near its node has one node there, connected", "[soapfilm]") {
@@ -28,12 +38,7 @@ TEST_CASE("a curve ending on an old curve near its node has one node there, conn
   // between the two and cut B off from A (the replay's missing cycles).
   net.apply(soapfilm::cassie_graph_edit(net, {{2, straight({0.012, 0, 0}, {0.012, 1, 0})}}));
   CHECK(net.nodes().size() == 3);
-  CurveId b = 0;
-  for (const auto& [id, c] : net.curves())
-    if (c.source_stroke == 2) b = id;
-  const std::vector<Segment> pieces = net.segments_of(b);
-  REQUIRE(pieces.size() == 1);
-  const Node* start = net.find_node(pieces.front().node0);
+  const Node* start = start_node(net, 2);
   REQUIRE(start != nullptr);
   CHECK(start->position.norm() < 1e-12);  // A's end node, where A starts
   CHECK(start->incidences.size() == 2);
@@ -54,12 +59,7 @@ TEST_CASE("a curve meeting an old curve reuses the nearest of its nodes within d
     const double x = right ? 0.516 : 0.508;
     net.apply(soapfilm::cassie_graph_edit(net, {{4, straight({x, 0, 0}, {x, -1, 0})}}));
     CHECK(net.nodes().size() == 7);  // B's far end only
-    CurveId b = 0;
-    for (const auto& [id, c] : net.curves())
-      if (c.source_stroke == 4) b = id;
-    const std::vector<Segment> pieces = net.segments_of(b);
-    REQUIRE(pieces.size() == 1);
-    const Node* start = net.find_node(pieces.front().node0);
+    const Node* start = start_node(net, 4);
     REQUIRE(start != nullptr);
     CHECK((start->position - Vec3(right ? 0.523 : 0.5, 0, 0)).norm() < 1e-12);
     CHECK(start->incidences.size() == 3);  // A, the curve that made it, B
@@ -83,11 +83,6 @@ TEST_CASE("a node a deleted curve left inside another is reused only with reuse_
     net.apply(soapfilm::cassie_graph_edit(net, {{3, straight({0.507, 0, 0}, {0.507, -1, 0})}}, params));
     return net;
   };
-  auto start_of_b = [](const Network& net) {
-    for (const auto& [id, c] : net.curves())
-      if (c.source_stroke == 3) return net.find_node(net.segments_of(id).front().node0);
-    return static_cast<const Node*>(nullptr);
-  };
   // CASSIE's graph: the node where B meets A (its exported final graphs).
   Network cassie;
   cassie.apply(soapfilm::cassie_graph_edit(cassie, {{1, straight({0, 0, 0}, {1, 0, 0})}}));
@@ -95,7 +90,7 @@ TEST_CASE("a node a deleted curve left inside another is reused only with reuse_
   REQUIRE(cassie.nodes().size() == 4);
 
   const Network reused = build(true);
-  const Node* n = start_of_b(reused);
+  const Node* n = start_node(reused, 3);
   REQUIRE(n != nullptr);
   CHECK((n->position - Vec3(0.5, 0, 0)).norm() < 1e-12);
   CHECK(n->incidences.size() == 2);  // A and B
@@ -106,7 +101,7 @@ TEST_CASE("a node a deleted curve left inside another is reused only with reuse_
   CHECK(a.ours_matched == 3);
 
   const Network fresh = build(false);
-  n = start_of_b(fresh);
+  n = start_node(fresh, 3);
   REQUIRE(n != nullptr);
   CHECK((n->position - Vec3(0.507, 0, 0)).norm() < 1e-12);
   CHECK(n->incidences.size() == 2);

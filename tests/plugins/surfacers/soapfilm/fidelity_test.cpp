@@ -51,7 +51,8 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
     final += fr;
     const Network exported = soapfilm::load_cassie_network(graph).network;
     nodes += soapfilm::compare_graph_nodes(exported, r.network);
-    nodes_fresh += soapfilm::compare_graph_nodes(exported, soapfilm::replay_cassie_session(session, params, fresh).network);
+    nodes_fresh +=
+        soapfilm::compare_graph_nodes(exported, soapfilm::replay_cassie_session(session, params, fresh).network);
     // Every disagreement of the replay has exactly one cause.
     const soapfilm::ReplayFigures& rf = r.figures;
     CHECK(rf.causes.missed_created() == rf.cassie_created - rf.matched_created);
