@@ -5,6 +5,7 @@
 
 #include "cassie_breaks.hpp"
 #include "cassie_json.hpp"
+#include "curve_graph.hpp"
 #include "patch_upkeep.hpp"
 #include "sketchlab/network_curve.hpp"
 
@@ -172,6 +173,31 @@ FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_jso
       if (manual.count(s)) ++r.extra_matching_manual;
     }
   return r;
+}
+
+NodeAgreement& NodeAgreement::operator+=(const NodeAgreement& o) {
+  cassie += o.cassie;
+  ours += o.ours;
+  cassie_matched += o.cassie_matched;
+  ours_matched += o.ours_matched;
+  return *this;
+}
+
+NodeAgreement compare_graph_nodes(const Network& cassie, const Network& ours, double tolerance) {
+  NodeAgreement a;
+  const CurveGraph graph(ours);
+  for (const auto& [id, n] : cassie.nodes()) {
+    const std::vector<NodeHit> hits = ours.nodes_near(n.position, tolerance);
+    ++a.cassie;
+    a.cassie_matched +=
+        std::any_of(hits.begin(), hits.end(), [&](const NodeHit& h) { return graph.is_graph_node(h.node); });
+  }
+  for (const auto& [id, n] : ours.nodes()) {
+    if (!graph.is_graph_node(id)) continue;
+    ++a.ours;
+    a.ours_matched += !cassie.nodes_near(n.position, tolerance).empty();
+  }
+  return a;
 }
 
 }  // namespace sketchlab::soapfilm

@@ -56,4 +56,16 @@ struct FidelityReport {
 FidelityReport compare_with_cassie(const std::filesystem::path& sketch_graph_json, const CassieSession& session,
                                    const CycleSearchParams& params);
 
+// Where a rebuilt network's nodes are against CASSIE's exported graph: each
+// side's nodes with a node of the other within `tolerance` (m). CASSIE's
+// side counts every exported node, ours the graph nodes (curve_graph.hpp:
+// not what a deleted curve left inside another). Measures the replay's
+// graph rule (item 22) on the final networks, independently of the walk.
+struct NodeAgreement {
+  int cassie = 0, ours = 0;                  // nodes
+  int cassie_matched = 0, ours_matched = 0;  // of those, with one of the other side that close
+  NodeAgreement& operator+=(const NodeAgreement& o);
+};
+NodeAgreement compare_graph_nodes(const Network& cassie, const Network& ours, double tolerance = 1e-3);
+
 }  // namespace sketchlab::soapfilm

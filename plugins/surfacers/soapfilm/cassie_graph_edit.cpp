@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "curve_graph.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/network_curve.hpp"
 
@@ -40,16 +41,20 @@ class Overlay {
         out.push_back({c.id, cp.t, cp.point, cp.distance});
     return out;
   }
-  // The node nearest p within r with an incidence on `curve`, or 0.
-  NodeId node_on(CurveId curve, const Vec3& p, double r) const {
+  // The node nearest p within r with an incidence on `curve`, or 0; a node
+  // of the network that is no graph node (what a deleted curve left) only
+  // if `left_over`. The edit's own nodes are all graph nodes.
+  NodeId node_on(CurveId curve, const Vec3& p, double r, bool left_over) const {
     NodeId best = 0;
     double best_d = INFINITY;
     auto consider = [&](const Node& n) {
       const double d = (n.position - p).norm();
       if (d <= r && d < best_d && on_curve(n, curve)) best = n.id, best_d = d;
     };
+    const CurveGraph graph(*network_);
     for (const NodeHit& h : network_->nodes_near(p, r))
-      if (!nodes_.count(h.node)) consider(*network_->find_node(h.node));
+      if (!nodes_.count(h.node) && (left_over || graph.is_graph_node(h.node)))
+        consider(*network_->find_node(h.node));
     for (const auto& [id, n] : nodes_) consider(n);
     return best;
   }
@@ -147,7 +152,7 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
       continue;
     }
     // 1. A node of the old curve within δ of the meeting point.
-    if (const NodeId old_node = overlay.node_on(m.old, m.point, params.reuse_old * delta)) {
+    if (const NodeId old_node = overlay.node_on(m.old, m.point, params.reuse_old * delta, params.reuse_left_over)) {
       Node& n = overlay.node(old_node);
       if (!has_incidence(n, c, t)) n.incidences.push_back({c, t});
       if (std::none_of(on_new.begin(), on_new.end(), [&](const auto& p) { return p.first == old_node; }))

@@ -26,6 +26,11 @@ struct CassieGraphParams {
   double line_meets = 0.2;   // ×δ: a line meets a curve passing this close (item 17)
   double reuse_old = 1.0;    // ×δ: reuse a node of the old curve this close (item 22)
   double reuse_new = 0.5;    // ×δ: reuse a node of the new curve this close (item 22)
+  // Reuse also a node only a deleted curve made, left on an old curve as one
+  // incidence inside it (not a graph node: curve_graph.hpp). false matches
+  // CASSIE's exported final graphs (their nodes lie where the curves meet,
+  // not at such nodes: README.md, "Fidelity") but loses patches: see there.
+  bool reuse_left_over = true;
 };
 
 // One curve of a replayed stroke.

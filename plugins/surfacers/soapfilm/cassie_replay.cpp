@@ -373,6 +373,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     else
       ++why.end_removed_other;
   }
+  result.network = live.sketch().network;
   std::set<StrokeSet> rebuilt;
   for (const auto& cycle : detect_all_cycles(live.sketch().network, params.search)) {
     StrokeSet s;

@@ -88,6 +88,7 @@ struct ReplayResult {
   ReplayFigures figures;
   std::vector<AstrayMiss> astray;  // figures.causes.miss_not_found of them
   std::vector<std::string> warnings;  // the session loader's and the replay's
+  Network network;  // the replay's network at the end
 };
 
 // A two-sample stroke with id `id`: stands in for a stroke whose curve is

@@ -1,5 +1,5 @@
 // soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
-//                  [--events CSV] [--astray]
+//                  [--no-left-over-nodes] [--events CSV] [--astray]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -14,7 +14,9 @@
 // --param sets a plugin parameter (as in `sketchlab plugins soapfilm`);
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
-// Bézier joint meets an alive curve (CassieGraphParams::on_curve); --astray
+// Bézier joint meets an alive curve (CassieGraphParams::on_curve);
+// --no-left-over-nodes does not reuse the nodes deleted curves left inside
+// others (CassieGraphParams::reuse_left_over); --astray
 // lists every CASSIE patch no walk closes over, with the node where the
 // walks leave it (replay_causes.hpp, Departure).
 #include <algorithm>
@@ -54,6 +56,7 @@ struct Row {
   std::string final_error, replay_error;
   FidelityReport final;
   ReplayFigures replay;
+  NodeAgreement nodes;  // the replay's final graph against CASSIE's exported one
   std::vector<AstrayMiss> astray;
   int events = 0;
 };
@@ -93,6 +96,8 @@ int main(int argc, char** argv) {
         // Replay: a joint this close (m) to an alive curve meets it.
         options.graph.on_curve = std::stod(argv[++i]);
         if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
+      } else if (a == "--no-left-over-nodes") {
+        options.graph.reuse_left_over = false;
       } else if (a == "--no-user-edits") {
         options.user_patch_edits = false;
       } else if (a == "--events" && i + 1 < argc) {
@@ -101,7 +106,7 @@ int main(int argc, char** argv) {
         list_astray = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--events CSV] [--astray]\n";
+                     "[--meets M] [--no-left-over-nodes] [--events CSV] [--astray]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
@@ -151,6 +156,8 @@ int main(int argc, char** argv) {
       }
       const ReplayResult r = replay_cassie_session(session, params, options);
       row.replay = r.figures;
+      if (row.has_graph && row.final_error.empty())
+        row.nodes = compare_graph_nodes(load_cassie_network(graph).network, r.network);
       row.astray = r.astray;
       row.events = static_cast<int>(r.events.size());
       for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
@@ -240,17 +247,25 @@ int main(int argc, char** argv) {
   // Hypothesis (issue 16): the replay's graph, rebuilt from CASSIE's control
   // points (item 22), costs cycles CASSIE's exact graph has. The same
   // whole-network search on both, and why the exact graph's misses are missed.
+  // The nodes of the two final graphs, within 1 mm (compare_graph_nodes).
   std::cout << "| session | final, exact graph: found | missed: no closed path | missed: no walk closes "
-               "| final, replay's graph: found | cycles |\n|---|---|---|---|---|---|\n";
+               "| final, replay's graph: found | cycles | CASSIE's nodes at one of ours | ours at one of CASSIE's |\n"
+               "|---|---|---|---|---|---|---|---|\n";
+  NodeAgreement total_nodes;
   for (const Row& r : rows)
-    if (r.system == 2 && r.final_error.empty() && r.replay_error.empty() && r.has_graph)
+    if (r.system == 2 && r.final_error.empty() && r.replay_error.empty() && r.has_graph) {
       std::cout << "| " << r.session << " | " << ratio(r.final.found, r.final.cassie_automatic) << " | "
                 << r.final.missed_not_closed << " | " << r.final.missed_not_found << " | "
-                << ratio(r.replay.rebuilt_found, r.replay.cassie_final) << " | " << r.replay.rebuilt_ours << " |\n";
+                << ratio(r.replay.rebuilt_found, r.replay.cassie_final) << " | " << r.replay.rebuilt_ours << " | "
+                << ratio(r.nodes.cassie_matched, r.nodes.cassie) << " | " << ratio(r.nodes.ours_matched, r.nodes.ours)
+                << " |\n";
+      total_nodes += r.nodes;
+    }
   std::cout << "| **total** | " << ratio(total_final.found, total_final.cassie_automatic) << " | "
             << total_final.missed_not_closed << " | " << total_final.missed_not_found << " | "
             << ratio(total_replay.rebuilt_found, total_replay.cassie_final) << " | " << total_replay.rebuilt_ours
-            << " |\n\n";
+            << " | " << ratio(total_nodes.cassie_matched, total_nodes.cassie) << " | "
+            << ratio(total_nodes.ours_matched, total_nodes.ours) << " |\n\n";
 
   if (list_astray) {
     // One row per CASSIE patch no walk closes over (replay_causes.hpp).
@@ -286,6 +301,10 @@ int main(int argc, char** argv) {
   line("replay.rebuilt_final_recall", total_replay.cassie_final ? double(total_replay.rebuilt_found) / total_replay.cassie_final : 0, "1");
   line("replay.rebuilt_final_precision", total_replay.rebuilt_ours ? double(total_replay.rebuilt_found) / total_replay.rebuilt_ours : 0, "1");
   line("final.precision", total_final.ours ? double(total_final.found) / total_final.ours : 0, "1");
+  line("replay.final_nodes_cassie_matched", total_nodes.cassie_matched, "nodes");
+  line("replay.final_nodes_cassie", total_nodes.cassie, "nodes");
+  line("replay.final_nodes_ours_matched", total_nodes.ours_matched, "nodes");
+  line("replay.final_nodes_ours", total_nodes.ours, "nodes");
   line("replay.cassie_created", total_replay.cassie_created, "patches");
   line("replay.ours_created", total_replay.ours_created, "patches");
   line("replay.matched_created", total_replay.matched_created, "patches");

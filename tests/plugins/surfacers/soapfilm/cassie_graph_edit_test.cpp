@@ -2,6 +2,7 @@
 // CASSIE app item 22).
 #include <catch2/catch.hpp>
 
+#include "cassie_graph.hpp"
 #include "cassie_graph_edit.hpp"
 
 using namespace sketchlab;
@@ -13,6 +14,16 @@ Curve straight(const Vec3& a, const Vec3& b) {
   c.control_points = {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b};
   c.sharp = {false, false};
   return c;
+}
+
+// The node where the curve of `stroke` starts, when it is one segment.
+const Node* start_node(const Network& net, StrokeId stroke) {
+  for (const auto& [id, c] : net.curves())
+    if (c.source_stroke == stroke) {
+      const std::vector<Segment> pieces = net.segments_of(id);
+      return pieces.size() == 1 ? net.find_node(pieces.front().node0) : nullptr;
+    }
+  return nullptr;
 }
 
 }  // namespace
@@ -27,13 +38,76 @@ TEST_CASE("a curve ending on an old curve near its node has one node there, conn
   // between the two and cut B off from A (the replay's missing cycles).
   net.apply(soapfilm::cassie_graph_edit(net, {{2, straight({0.012, 0, 0}, {0.012, 1, 0})}}));
   CHECK(net.nodes().size() == 3);
-  CurveId b = 0;
-  for (const auto& [id, c] : net.curves())
-    if (c.source_stroke == 2) b = id;
-  const std::vector<Segment> pieces = net.segments_of(b);
-  REQUIRE(pieces.size() == 1);
-  const Node* start = net.find_node(pieces.front().node0);
+  const Node* start = start_node(net, 2);
   REQUIRE(start != nullptr);
   CHECK(start->position.norm() < 1e-12);  // A's end node, where A starts
   CHECK(start->incidences.size() == 2);
+}
+
+TEST_CASE("a curve meeting an old curve reuses the nearest of its nodes within delta", "[soapfilm]") {
+  // CASSIE app, item 22: the node reused on the old curve is within δ (2 cm)
+  // of the meeting; with two there, the nearer one, whichever was made first.
+  for (const bool right : {false, true}) {
+    Network net;
+    net.apply(soapfilm::cassie_graph_edit(net, {{1, straight({0, 0, 0}, {1, 0, 0})}}));
+    // Two nodes on A, 2.3 cm apart (beyond δ: the second gets its own node).
+    net.apply(soapfilm::cassie_graph_edit(net, {{2, straight({0.5, 0, 0}, {0.5, 1, 0})}}));
+    net.apply(soapfilm::cassie_graph_edit(net, {{3, straight({0.523, 0, 0}, {0.523, 1, 0})}}));
+    REQUIRE(net.nodes().size() == 6);
+    // B starts on A 0.8 cm from the first node and 1.5 cm from the second,
+    // or 1.6 cm and 0.7 cm.
+    const double x = right ? 0.516 : 0.508;
+    net.apply(soapfilm::cassie_graph_edit(net, {{4, straight({x, 0, 0}, {x, -1, 0})}}));
+    CHECK(net.nodes().size() == 7);  // B's far end only
+    const Node* start = start_node(net, 4);
+    REQUIRE(start != nullptr);
+    CHECK((start->position - Vec3(right ? 0.523 : 0.5, 0, 0)).norm() < 1e-12);
+    CHECK(start->incidences.size() == 3);  // A, the curve that made it, B
+  }
+}
+
+TEST_CASE("a node a deleted curve left inside another is reused only with reuse_left_over", "[soapfilm]") {
+  // A, then C ending on A at x = 0.5 (a node there), then C deleted: the node
+  // stays on A alone, no graph node. B then ends on A 7 mm from it (within δ,
+  // beyond 0.5δ), as teapot's stroke 94 next to what strokes 44/45 left.
+  auto build = [](bool reuse_left_over) {
+    soapfilm::CassieGraphParams params;
+    params.reuse_left_over = reuse_left_over;
+    Network net;
+    net.apply(soapfilm::cassie_graph_edit(net, {{1, straight({0, 0, 0}, {1, 0, 0})}}, params));
+    net.apply(soapfilm::cassie_graph_edit(net, {{2, straight({0.5, 0, 0}, {0.5, 1, 0})}}, params));
+    Edit del;
+    for (const auto& [id, c] : net.curves())
+      if (c.source_stroke == 2) del.curves_removed.push_back(id);
+    net.apply(del);
+    net.apply(soapfilm::cassie_graph_edit(net, {{3, straight({0.507, 0, 0}, {0.507, -1, 0})}}, params));
+    return net;
+  };
+  // CASSIE's graph: the node where B meets A (its exported final graphs).
+  Network cassie;
+  cassie.apply(soapfilm::cassie_graph_edit(cassie, {{1, straight({0, 0, 0}, {1, 0, 0})}}));
+  cassie.apply(soapfilm::cassie_graph_edit(cassie, {{3, straight({0.507, 0, 0}, {0.507, -1, 0})}}));
+  REQUIRE(cassie.nodes().size() == 4);
+
+  const Network reused = build(true);
+  const Node* n = start_node(reused, 3);
+  REQUIRE(n != nullptr);
+  CHECK((n->position - Vec3(0.5, 0, 0)).norm() < 1e-12);
+  CHECK(n->incidences.size() == 2);  // A and B
+  soapfilm::NodeAgreement a = soapfilm::compare_graph_nodes(cassie, reused);
+  CHECK(a.cassie == 4);
+  CHECK(a.ours == 4);
+  CHECK(a.cassie_matched == 3);
+  CHECK(a.ours_matched == 3);
+
+  const Network fresh = build(false);
+  n = start_node(fresh, 3);
+  REQUIRE(n != nullptr);
+  CHECK((n->position - Vec3(0.507, 0, 0)).norm() < 1e-12);
+  CHECK(n->incidences.size() == 2);
+  CHECK(fresh.nodes().size() == 5);  // the left-over one stays, no graph node
+  a = soapfilm::compare_graph_nodes(cassie, fresh);
+  CHECK(a.ours == 4);
+  CHECK(a.cassie_matched == 4);
+  CHECK(a.ours_matched == 4);
 }
