@@ -27,10 +27,12 @@ struct CassieGraphParams {
   double reuse_old = 1.0;    // ×δ: reuse a node of the old curve this close (item 22)
   double reuse_new = 0.5;    // ×δ: reuse a node of the new curve this close (item 22)
   // Reuse also a node only a deleted curve made, left on an old curve as one
-  // incidence inside it (not a graph node: curve_graph.hpp). false matches
-  // CASSIE's exported final graphs (their nodes lie where the curves meet,
-  // not at such nodes: README.md, "Fidelity") but loses patches: see there.
-  bool reuse_left_over = true;
+  // incidence inside it (not a graph node: curve_graph.hpp). Off, as CASSIE's
+  // graph: its exported final graphs have a node where the curves meet, not
+  // at such nodes (1,072 of their 1,076 nodes matched off, 957 on), and its
+  // log never snaps an end onto one (README.md, "Fidelity"). On wins a few
+  // patches (created 1,412 against 1,405) over a graph CASSIE did not have.
+  bool reuse_left_over = false;
 };
 
 // One curve of a replayed stroke.

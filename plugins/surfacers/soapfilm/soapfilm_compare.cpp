@@ -1,5 +1,5 @@
 // soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
-//                  [--no-left-over-nodes] [--events CSV] [--astray]
+//                  [--left-over-nodes] [--events CSV] [--astray]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -15,8 +15,8 @@
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
 // Bézier joint meets an alive curve (CassieGraphParams::on_curve);
-// --no-left-over-nodes does not reuse the nodes deleted curves left inside
-// others (CassieGraphParams::reuse_left_over); --astray
+// --left-over-nodes also reuses the nodes deleted curves left inside others
+// (CassieGraphParams::reuse_left_over, off as in CASSIE's graph); --astray
 // lists every CASSIE patch no walk closes over, with the node where the
 // walks leave it (replay_causes.hpp, Departure).
 #include <algorithm>
@@ -96,8 +96,8 @@ int main(int argc, char** argv) {
         // Replay: a joint this close (m) to an alive curve meets it.
         options.graph.on_curve = std::stod(argv[++i]);
         if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
-      } else if (a == "--no-left-over-nodes") {
-        options.graph.reuse_left_over = false;
+      } else if (a == "--left-over-nodes") {
+        options.graph.reuse_left_over = true;
       } else if (a == "--no-user-edits") {
         options.user_patch_edits = false;
       } else if (a == "--events" && i + 1 < argc) {
@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
         list_astray = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--no-left-over-nodes] [--events CSV] [--astray]\n";
+                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;

@@ -20,11 +20,11 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   const soapfilm::SoapfilmParams params;
   soapfilm::FidelityReport final;
   soapfilm::ReplayFigures replay;
-  // The replay's final graph nodes against CASSIE's exported ones, with the
-  // nodes deleted curves left reused (the default) and not.
-  soapfilm::NodeAgreement nodes, nodes_fresh;
-  soapfilm::ReplayOptions fresh;
-  fresh.graph.reuse_left_over = false;
+  // The replay's final graph nodes against CASSIE's exported ones, without
+  // reusing the nodes deleted curves left (the default) and with.
+  soapfilm::NodeAgreement nodes, nodes_left_over;
+  soapfilm::ReplayOptions left_over;
+  left_over.graph.reuse_left_over = true;
   int sessions = 0, patch_sessions = 0;
   for (const auto& f : std::filesystem::directory_iterator(dir / "sketch_history")) {
     if (f.path().extension() != ".json") continue;  // the folder's README
@@ -51,8 +51,8 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
     final += fr;
     const Network exported = soapfilm::load_cassie_network(graph).network;
     nodes += soapfilm::compare_graph_nodes(exported, r.network);
-    nodes_fresh +=
-        soapfilm::compare_graph_nodes(exported, soapfilm::replay_cassie_session(session, params, fresh).network);
+    nodes_left_over +=
+        soapfilm::compare_graph_nodes(exported, soapfilm::replay_cassie_session(session, params, left_over).network);
     // Every disagreement of the replay has exactly one cause.
     const soapfilm::ReplayFigures& rf = r.figures;
     CHECK(rf.causes.missed_created() == rf.cassie_created - rf.matched_created);
@@ -85,33 +85,33 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.cassie_created == 1727);
   CHECK(replay.cassie_broken == 362);
   // Measured: final 356/479 (74.3 %), precision 356/505 (70.5 %); replay
-  // created 1412/1727 (81.8 %), precision 79.9 %; at the end 408/480
-  // (85.0 %), precision 86.4 %; 320 of CASSIE's 362 breaks made by us at
+  // created 1405/1727 (81.4 %), precision 79.9 %; at the end 401/480
+  // (83.5 %), precision 86.1 %; 321 of CASSIE's 362 breaks made by us at
   // the same event. The whole-network search on the replay's own final
   // network: 385/480.
   CHECK(final.found >= 352);
   CHECK(double(final.found) / final.ours >= 0.70);
   CHECK(replay.recall_created() >= 0.81);
   CHECK(replay.precision_created() >= 0.79);
-  CHECK(replay.recall_final() >= 0.845);
-  CHECK(replay.precision_final() >= 0.86);
+  CHECK(replay.recall_final() >= 0.83);
+  CHECK(replay.precision_final() >= 0.855);
   CHECK(replay.matched_broken >= 315);
   CHECK(replay.rebuilt_found >= 380);
-  // Measured 957/1076 and 945/1068 (default), 1072/1076 and 1060/1065 (not
-  // reusing what deleted curves left): CASSIE's exported graph has a node
+  // Measured 1072/1076 and 1060/1065 (default), 957/1076 and 945/1068
+  // (reusing what deleted curves left): CASSIE's exported graph has a node
   // where the curves meet, not at those (README.md, "Fidelity").
   CHECK(nodes.cassie == 1076);
-  CHECK(nodes.cassie_matched >= 950);
-  CHECK(nodes.ours_matched * 100 >= nodes.ours * 87);
-  CHECK(nodes_fresh.cassie_matched >= 1068);
-  CHECK(nodes_fresh.ours_matched * 100 >= nodes_fresh.ours * 99);
+  CHECK(nodes.cassie_matched >= 1068);
+  CHECK(nodes.ours_matched * 100 >= nodes.ours * 99);
+  CHECK(nodes_left_over.cassie_matched >= 950);
+  CHECK(nodes_left_over.ours_matched * 100 >= nodes_left_over.ours * 87);
   // The replay's main causes of disagreement (README.md, "Causes"):
-  // measured 86 CASSIE patches whose curves hold no closed path in our graph
-  // and 87 that one does but no walk follows (20 leaving it at a sharp node,
-  // 28 at a smooth node whose normals cross, 27 at another smooth node), 20
+  // measured 90 CASSIE patches whose curves hold no closed path in our graph
+  // and 82 that one does but no walk follows (9 leaving it at a sharp node,
+  // 30 at a smooth node whose normals cross, 31 at another smooth node), 20
   // broken by a later crossing CASSIE did not break; fewer is better, more
   // is a regression.
-  CHECK(replay.causes.miss_not_closed <= 90);
+  CHECK(replay.causes.miss_not_closed <= 93);
   CHECK(replay.causes.miss_not_found <= 90);
   CHECK(replay.causes.end_removed_by_crossing <= 25);
   // Most extra cycles on the final networks are patches CASSIE's users had
