@@ -44,13 +44,34 @@ const std::vector<int>& CurveGraph::segments_of(CurveId curve) {
   std::vector<int>& out = by_curve_[curve];
   const NetworkCurve* nc = network_->find_curve(curve);
   if (!nc) return out;
-  const std::vector<Segment> pieces = network_->segments_of(curve);
+  std::vector<Segment> pieces = network_->segments_of(curve);
   if (pieces.empty()) return out;
   const std::size_t n = pieces.size();
+  const Curve& c = nc->curve;
+  // Nodes at one parameter are one point of the curve (CASSIE app, item 22:
+  // one node per meeting point). Nodes deleted curves left (not graph nodes)
+  // can share a parameter with each other or with a later meeting's node;
+  // the kernel has no piece between them, so each piece end there stands for
+  // the graph node at that parameter if there is one, and pieces meeting at
+  // one parameter are contiguous.
+  std::vector<std::pair<double, NodeId>> graph_nodes;
+  for (const Segment& p : pieces)
+    for (const auto& [t, id] : {std::pair{p.t0, p.node0}, std::pair{p.t1, p.node1}})
+      if (is_graph_node(id)) graph_nodes.emplace_back(t, id);
+  const auto stand_in = [&](double t, NodeId id) {
+    if (is_graph_node(id)) return id;
+    for (const auto& [tg, g] : graph_nodes)
+      if (same_t(c, tg, t)) return g;
+    return id;
+  };
+  for (Segment& p : pieces) {
+    p.node0 = stand_in(p.t0, p.node0);
+    p.node1 = stand_in(p.t1, p.node1);
+  }
   // Start at a piece beginning at a graph node (closed curves may start
   // anywhere in the list); merge pieces across non-graph nodes.
   std::size_t start = 0;
-  if (nc->curve.closed) {
+  if (c.closed) {
     while (start < n && !is_graph_node(pieces[start].node0)) ++start;
     // A closed curve meeting nothing is one loop at its first node (CASSIE
     // app, item 22: a closed stroke is one node with its segment attached
@@ -58,15 +79,16 @@ const std::vector<int>& CurveGraph::segments_of(CurveId curve) {
     if (start == n) start = 0;
   }
   std::size_t i = start;
-  const std::size_t count = nc->curve.closed ? n : n - start;
+  const std::size_t count = c.closed ? n : n - start;
   std::size_t done = 0;
   while (done < count) {
     GraphSegment g{curve, pieces[i].t0, pieces[i].t1, pieces[i].node0, pieces[i].node1};
     ++done;
-    // Open curves: pieces are contiguous only when they share a node.
+    // Open curves: pieces are contiguous only when they share a node or a
+    // parameter (see above).
     while (done < count && !is_graph_node(g.node1)) {
       const Segment& next = pieces[(i + 1) % n];
-      if (next.node0 != g.node1) break;
+      if (next.node0 != g.node1 && !same_t(c, next.t0, g.t1)) break;
       i = (i + 1) % n;
       g.t1 = next.t1;
       g.node1 = next.node1;
