@@ -280,8 +280,9 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       if (it->second.automatic) {
         ev.added.push_back(strokes);
         ++ours_at[{ev.group, strokes}];
-        made[it->first] = describe(net, it->second, params.search, {ev.group, st.time, st.kind, ev.element, strokes});
-        made[it->first].broken_here = static_cast<int>(ev.removed.size());
+        ExtraPatch& x = made[it->first] =
+            describe(net, it->second, params.search, {ev.group, st.time, st.kind, ev.element, strokes});
+        x.broken_here = static_cast<int>(ev.removed.size());
       } else if (st.kind == "add_patch") {
         of_cassie[ev.element] = it->first;
       }
@@ -379,13 +380,13 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
                                                 : why.extra_other;
     bucket += extra;
     if (&bucket != &why.extra_other) continue;
-    ExtraPatch x;
     for (auto it = made.begin(); it != made.end() && extra > 0; ++it)
       if (it->second.group == key.first && it->second.strokes == key.second) {
-        x = it->second;
-        for (auto h = cassie_at.lower_bound({key.first, StrokeSet{}}); h != cassie_at.end() && h->first.first == key.first; ++h)
+        ExtraPatch x = it->second;
+        for (auto h = cassie_at.lower_bound({key.first, StrokeSet{}}); h != cassie_at.end() && h->first.first == key.first;
+             ++h)
           x.cassie_here.push_back(h->first.second);
-        result.extras.push_back(x);
+        result.extras.push_back(std::move(x));
         --extra;
       }
   }

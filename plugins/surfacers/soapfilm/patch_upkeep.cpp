@@ -31,6 +31,7 @@ Deleted deleted_with(const Sketch& sketch, const Edit& last, const std::set<Curv
   Deleted out;
   std::set<CurveId> open = removed;  // curves whose adding edit is not reached yet
   std::set<PatchId> later;           // patches removed or replaced after the point reached
+  const auto on_removed = [&](const OrientedSegment& piece) { return removed.count(piece.curve) > 0; };
   auto scan = [&](const Edit& e) {
     for (const auto* list : {&e.nodes_added, &e.nodes_replaced})
       for (const Node& n : *list)
@@ -41,12 +42,10 @@ Deleted deleted_with(const Sketch& sketch, const Edit& last, const std::set<Curv
       if (!later.insert(p.id).second) continue;
       // Alive until now: its curves were all there (a patch the kernel
       // removed with an earlier deleted curve is listed nowhere).
-      const auto on = [&](CurveId c) { return removed.count(c) > 0; };
-      const bool here = std::all_of(p.boundary.begin(), p.boundary.end(), [&](const OrientedSegment& piece) {
-        return on(piece.curve) || sketch.network.find_curve(piece.curve);
+      const bool alive = std::all_of(p.boundary.begin(), p.boundary.end(), [&](const OrientedSegment& piece) {
+        return on_removed(piece) || sketch.network.find_curve(piece.curve);
       });
-      if (here && std::any_of(p.boundary.begin(), p.boundary.end(), [&](const OrientedSegment& piece) { return on(piece.curve); }))
-        out.patches.push_back(p.boundary);
+      if (alive && std::any_of(p.boundary.begin(), p.boundary.end(), on_removed)) out.patches.push_back(p.boundary);
     }
     later.insert(e.patches_removed.begin(), e.patches_removed.end());
   };
