@@ -75,6 +75,24 @@ std::optional<Vec3> point_on(const Patch& p) {
   return (p.mesh.vertices[f[0]] + p.mesh.vertices[f[1]] + p.mesh.vertices[f[2]]) / 3.0;
 }
 
+// `base` completed with what the cycle is on our graph (ExtraPatch).
+ExtraPatch describe(const Network& net, const Patch& p, const CycleSearchParams& params, ExtraPatch base) {
+  CurveGraph graph(net);
+  CycleSearcher searcher(graph, params);
+  std::map<NodeId, int> ends;  // segment ends of the cycle at each node
+  for (int s : boundary_key(graph, p.boundary)) {
+    ++base.pieces;
+    ++ends[graph.segment(s).node0];
+    ++ends[graph.segment(s).node1];
+  }
+  for (const auto& [node, k] : ends) {
+    base.sharp_nodes += searcher.frame(node).sharp ? 1 : 0;
+    base.revisited += k > 2 ? 1 : 0;
+    base.max_degree = std::max(base.max_degree, static_cast<int>(graph.outgoing(node).size()));
+  }
+  return base;
+}
+
 }  // namespace
 
 Stroke placeholder_stroke(StrokeId id) {
@@ -163,6 +181,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
   std::map<PatchId, bool> automatic;
   std::map<std::int64_t, PatchId> of_cassie;  // CASSIE manual patch -> ours made for it
   std::map<std::int64_t, StrokeId> action_of;  // CASSIE stroke -> the session stroke that added it
+  std::map<PatchId, ExtraPatch> made;          // each automatic patch of ours as made (for extras)
   StrokeId next_stroke = 1;
   std::size_t groups_seen = 0;
 
@@ -248,6 +267,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
         ev.removed.push_back(it->second);
         removed_by[it->second] = st.kind;
         ++result.figures.ours_removed;
+        made[it->first].removed_at = ev.group;
       }
       it = ours.erase(it);
     }
@@ -260,6 +280,9 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       if (it->second.automatic) {
         ev.added.push_back(strokes);
         ++ours_at[{ev.group, strokes}];
+        ExtraPatch& x = made[it->first] =
+            describe(net, it->second, params.search, {ev.group, st.time, st.kind, ev.element, strokes});
+        x.broken_here = static_cast<int>(ev.removed.size());
       } else if (st.kind == "add_patch") {
         of_cassie[ev.element] = it->first;
       }
@@ -350,12 +373,22 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
   }
   for (const auto& [key, m] : ours_at) {
     const auto c = cassie_at.find(key);
-    const int extra = m - std::min(m, c == cassie_at.end() ? 0 : c->second);
+    int extra = m - std::min(m, c == cassie_at.end() ? 0 : c->second);
     if (extra == 0) continue;
     int& bucket = cassie_ever.count(key.second) ? why.extra_elsewhere
                   : by_hand.count(key.second)   ? why.extra_by_hand
                                                 : why.extra_other;
     bucket += extra;
+    if (&bucket != &why.extra_other) continue;
+    for (auto it = made.begin(); it != made.end() && extra > 0; ++it)
+      if (it->second.group == key.first && it->second.strokes == key.second) {
+        ExtraPatch x = it->second;
+        for (auto h = cassie_at.lower_bound({key.first, StrokeSet{}}); h != cassie_at.end() && h->first.first == key.first;
+             ++h)
+          x.cassie_here.push_back(h->first.second);
+        result.extras.push_back(std::move(x));
+        --extra;
+      }
   }
   // At the end.
   std::set<StrokeSet> ours_final;

@@ -14,6 +14,7 @@
 // event that made it. A CASSIE patch is matched along the way when we create
 // a patch over the same strokes in the same group (one for one).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,10 +84,28 @@ struct AstrayMiss {
   std::int64_t taken = -1, wanted = -1;
 };
 
+// One of our automatic patches CASSIE never made (ReplayCauses::extra_other),
+// as it was when we made it.
+struct ExtraPatch {
+  std::size_t group = 0;
+  double time = 0.0;
+  std::string kind;            // the event that made it ("stroke", "delete", ...)
+  std::int64_t element = 0;    // its CASSIE stroke
+  StrokeSet strokes;
+  int pieces = 0;              // graph segments of the cycle
+  int sharp_nodes = 0;         // its nodes that are sharp (item 23)
+  int revisited = 0;           // its nodes the cycle passes twice (item 24 allows it)
+  int max_degree = 0;          // most graph segments at one of its nodes
+  int broken_here = 0;         // our patches the same event removed
+  std::vector<StrokeSet> cassie_here;  // CASSIE's automatic patches made at that group
+  std::optional<std::size_t> removed_at;  // group where we removed it, if we did
+};
+
 struct ReplayResult {
   std::vector<ReplayEvent> events;  // in replay order
   ReplayFigures figures;
   std::vector<AstrayMiss> astray;  // figures.causes.miss_not_found of them
+  std::vector<ExtraPatch> extras;  // figures.causes.extra_other of them
   std::vector<std::string> warnings;  // the session loader's and the replay's
   Network network;  // the replay's network at the end
 };

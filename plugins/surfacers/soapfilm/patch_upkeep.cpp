@@ -14,21 +14,40 @@ std::vector<OrientedSegment> to_boundary(const CurveGraph& graph, const Cycle& c
   return out;
 }
 
-// Nodes that had an incidence on one of `removed` curves: every node
-// incidence was created by some applied edit, so the edits in the history
-// (and the current one) name them all. The history is read backwards and
-// only as far back as the edit that added each removed curve (incidences on
-// a curve are never older than the curve), so the cost follows the age of
-// the deleted curves, not the size of the sketch.
-std::set<NodeId> nodes_touched_by(const Sketch& sketch, const Edit& last,
-                                  const std::set<CurveId>& removed) {
-  std::set<NodeId> out;
+// What deleting the `removed` curves took away, read from the edits in the
+// history (and the current one), which name every node incidence and every
+// patch the surfacer added: the nodes that had an incidence on a removed
+// curve, and the boundaries of the patches on one (the kernel removed those
+// with the curves). The history is read backwards and only as far back as
+// the edit that added each removed curve (incidences and patches on a curve
+// are never older than the curve), so the cost follows the age of the
+// deleted curves, not the size of the sketch.
+struct Deleted {
+  std::set<NodeId> nodes;
+  std::vector<std::vector<OrientedSegment>> patches;
+};
+
+Deleted deleted_with(const Sketch& sketch, const Edit& last, const std::set<CurveId>& removed) {
+  Deleted out;
   std::set<CurveId> open = removed;  // curves whose adding edit is not reached yet
+  std::set<PatchId> later;           // patches removed or replaced after the point reached
+  const auto on_removed = [&](const OrientedSegment& piece) { return removed.count(piece.curve) > 0; };
   auto scan = [&](const Edit& e) {
     for (const auto* list : {&e.nodes_added, &e.nodes_replaced})
       for (const Node& n : *list)
         for (const NodeIncidence& inc : n.incidences)
-          if (removed.count(inc.curve)) out.insert(n.id);
+          if (removed.count(inc.curve)) out.nodes.insert(n.id);
+    // Backwards through an edit: its patches were removed, then added.
+    for (const Patch& p : e.patches_added) {
+      if (!later.insert(p.id).second) continue;
+      // Alive until now: its curves were all there (a patch the kernel
+      // removed with an earlier deleted curve is listed nowhere).
+      const bool alive = std::all_of(p.boundary.begin(), p.boundary.end(), [&](const OrientedSegment& piece) {
+        return on_removed(piece) || sketch.network.find_curve(piece.curve);
+      });
+      if (alive && std::any_of(p.boundary.begin(), p.boundary.end(), on_removed)) out.patches.push_back(p.boundary);
+    }
+    later.insert(e.patches_removed.begin(), e.patches_removed.end());
   };
   scan(last);
   const auto& done = sketch.history.done;
@@ -225,17 +244,26 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
   }
   result.patches_broken = static_cast<int>(broken.size());
 
-  // Deletions: search again around the nodes the deleted curves touched.
-  std::set<int> around_deleted;
+  // Deletions: search again around the nodes the deleted curves touched,
+  // and first the segments left of the patches they took away (broken
+  // cycles, item 25; a patch is deleted when a boundary segment is removed,
+  // item 27).
+  std::set<int> around_deleted, of_deleted;
   std::set<CurveId> removed(last.curves_removed.begin(), last.curves_removed.end());
-  if (!removed.empty())
-    for (NodeId n : nodes_touched_by(sketch, last, removed)) {
+  if (!removed.empty()) {
+    const Deleted gone = deleted_with(sketch, last, removed);
+    for (NodeId n : gone.nodes) {
       const Node* node = net.find_node(n);
       if (!node) continue;
       for (const HalfEdge& h : graph.outgoing(n)) around_deleted.insert(h.segment);
       for (const NodeIncidence& inc : node->incidences)
         if (int s = graph.segment_at(inc.curve, inc.t); s >= 0) around_deleted.insert(s);
     }
+    for (const std::vector<OrientedSegment>& boundary : gone.patches)
+      for (const OrientedSegment& piece : boundary)
+        if (net.find_curve(piece.curve))
+          for (int s : graph.covered_by(piece)) of_deleted.insert(s);
+  }
 
   // Item 25 read the other way (seed_split_segments, off by default): old
   // curves' segments split by a node this edit added on them.
@@ -252,6 +280,7 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
     if (seen.insert(s).second) seeds.push_back(s);
   };
   for (int s : first_seeds) push(s);
+  for (int s : ordered(graph, of_deleted)) push(s);
   for (int s : ordered(graph, fresh)) push(s);
   for (int s : ordered(graph, split)) push(s);
   for (int s : ordered(graph, around_deleted)) push(s);

@@ -11,8 +11,9 @@
 //    reaches the cycle again through at most `break_reach` two-segment nodes.
 //    It is removed and one of its segments searched again, first;
 //  - deletions: the kernel removes patches bounded by a deleted curve; the
-//    segments at the nodes the deleted curve touched (read from the edits in
-//    the sketch's history) are searched again;
+//    segments left of those patches (broken cycles' seeds, searched first,
+//    item 25) and the segments at the nodes the deleted curve touched (both
+//    read from the edits in the sketch's history) are searched again;
 //  - two walks per seed (CycleSearcher::search_segment); a cycle over the
 //    segments of an existing patch is a duplicate, and a broken patch whose
 //    cycle is found again unchanged keeps its identity; a cycle over a

@@ -1,5 +1,5 @@
 // soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
-//                  [--left-over-nodes] [--events CSV] [--astray]
+//                  [--left-over-nodes] [--events CSV] [--astray] [--extras]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -18,7 +18,9 @@
 // --left-over-nodes also reuses the nodes deleted curves left inside others
 // (CassieGraphParams::reuse_left_over, off as in CASSIE's graph); --astray
 // lists every CASSIE patch no walk closes over, with the node where the
-// walks leave it (replay_causes.hpp, Departure).
+// walks leave it (replay_causes.hpp, Departure); --extras lists every
+// patch of ours CASSIE never made ("other" extras: cassie_replay.hpp,
+// ExtraPatch) and counts their traits.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -58,6 +60,7 @@ struct Row {
   ReplayFigures replay;
   NodeAgreement nodes;  // the replay's final graph against CASSIE's exported one
   std::vector<AstrayMiss> astray;
+  std::vector<ExtraPatch> extras;
   int events = 0;
 };
 
@@ -84,7 +87,7 @@ int main(int argc, char** argv) {
   std::map<std::string, ParamValue> given;
   ReplayOptions options;
   std::string events_csv;
-  bool list_astray = false;
+  bool list_astray = false, list_extras = false;
   const std::vector<ParamSpec> specs = soapfilm_param_specs();
   bool dir_given = false;
   try {
@@ -104,9 +107,11 @@ int main(int argc, char** argv) {
         events_csv = argv[++i];
       } else if (a == "--astray") {
         list_astray = true;
+      } else if (a == "--extras") {
+        list_extras = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray]\n";
+                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray] [--extras]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
@@ -159,6 +164,7 @@ int main(int argc, char** argv) {
       if (row.has_graph && row.final_error.empty())
         row.nodes = compare_graph_nodes(load_cassie_network(graph).network, r.network);
       row.astray = r.astray;
+      row.extras = r.extras;
       row.events = static_cast<int>(r.events.size());
       for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
       for (std::size_t i = 0; i < r.events.size(); ++i) {
@@ -286,6 +292,44 @@ int main(int argc, char** argv) {
                   << m.wanted << " | " << std::lround(m.at.apart * 180.0 / std::numbers::pi) << " | " << m.at.followed
                   << "/" << m.at.length << " |\n";
       }
+    std::cout << "\n";
+  }
+
+  if (list_extras) {
+    // One row per patch of ours CASSIE never made (cassie_replay.hpp,
+    // ExtraPatch), then how many share each trait.
+    auto joined = [](const StrokeSet& s) {
+      std::string out;
+      for (std::int64_t id : s) out += (out.empty() ? "" : " ") + std::to_string(id);
+      return out;
+    };
+    std::cout << "| session | event | time (s) | made by | strokes | segments | sharp nodes | nodes passed twice "
+                 "| most segments at a node | ours removed there | CASSIE's made there | we removed it at |\n"
+              << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::map<std::string, int> traits;
+    int listed = 0;
+    for (const Row& r : rows) {
+      if (r.system != 2) continue;
+      for (const ExtraPatch& x : r.extras) {
+        std::string here;
+        for (const StrokeSet& s : x.cassie_here) here += (here.empty() ? "" : "; ") + joined(s);
+        std::cout << "| " << r.session << " | " << x.group << " | " << x.time << " | " << x.kind << ' ' << x.element
+                  << " | " << joined(x.strokes) << " | " << x.pieces << " | " << x.sharp_nodes << " | " << x.revisited
+                  << " | " << x.max_degree << " | " << x.broken_here << " | " << here << " | "
+                  << (x.removed_at ? std::to_string(*x.removed_at) : std::string("–")) << " |\n";
+        ++listed;
+        traits["made at a deletion"] += x.kind == "delete";
+        traits["removed at the next event"] += x.removed_at == x.group + 1;
+        traits["CASSIE made other patches there"] += !x.cassie_here.empty();
+        traits["we removed patches there"] += x.broken_here > 0;
+        traits["a sharp node"] += x.sharp_nodes > 0;
+        traits["a node passed twice"] += x.revisited > 0;
+        traits["a node of 5 or more segments"] += x.max_degree >= 5;
+        traits["9 or more segments"] += x.pieces >= 9;
+      }
+    }
+    std::cout << "\n| extras (other), Patch sessions | " << listed << " |\n|---|---|\n";
+    for (const auto& [trait, n] : traits) std::cout << "| " << trait << " | " << n << " |\n";
     std::cout << "\n";
   }
 

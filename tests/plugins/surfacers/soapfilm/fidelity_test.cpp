@@ -71,6 +71,14 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
       CHECK(at_node == (m.at.node != 0));
       if (at_node) CHECK(m.at.followed <= m.at.length);
     }
+    // Each extra of ours CASSIE never made ("other") listed once, as made.
+    CHECK(static_cast<int>(r.extras.size()) == c.extra_other);
+    for (const soapfilm::ExtraPatch& x : r.extras) {
+      CHECK(x.pieces >= 1);
+      CHECK(x.sharp_nodes <= x.pieces);  // a cycle has no more nodes than segments
+      CHECK(x.max_degree >= 2);
+      if (x.removed_at) CHECK(*x.removed_at >= x.group);
+    }
     replay += r.figures;
   }
   CHECK(sessions == 18);
@@ -85,16 +93,17 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.cassie_created == 1727);
   CHECK(replay.cassie_broken == 362);
   // Measured: final 356/479 (74.3 %), precision 356/505 (70.5 %); replay
-  // created 1412/1727 (81.8 %), precision 80.0 %; at the end 402/480
-  // (83.8 %), precision 86.1 %; 323 of CASSIE's 362 breaks made by us at
-  // the same event. The whole-network search on the replay's own final
-  // network: 385/480.
+  // created 1412/1727 (81.8 %), precision 80.0 %; at the end 407/480
+  // (84.8 %), precision 86.4 % (eighth round: 402/480, 86.1 % before a
+  // deletion searched the segments left of the patches it took away);
+  // 323 of CASSIE's 362 breaks made by us at the same event. The
+  // whole-network search on the replay's own final network: 385/480.
   CHECK(final.found >= 352);
   CHECK(double(final.found) / final.ours >= 0.70);
   CHECK(replay.recall_created() >= 0.815);
-  CHECK(replay.precision_created() >= 0.79);
-  CHECK(replay.recall_final() >= 0.835);
-  CHECK(replay.precision_final() >= 0.855);
+  CHECK(replay.precision_created() >= 0.795);
+  CHECK(replay.recall_final() >= 0.845);
+  CHECK(replay.precision_final() >= 0.86);
   CHECK(replay.matched_broken >= 318);
   CHECK(replay.rebuilt_found >= 380);
   // Measured 1072/1076 and 1060/1065 (default), 957/1076 and 945/1068
@@ -114,6 +123,9 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.causes.miss_not_closed <= 88);
   CHECK(replay.causes.miss_not_found <= 90);
   CHECK(replay.causes.end_removed_by_crossing <= 25);
+  // Our patches CASSIE never made, at any event or by hand (eighth round):
+  // measured 180.
+  CHECK(replay.causes.extra_other <= 185);
   // Most extra cycles on the final networks are patches CASSIE's users had
   // to add by hand (the original missed them).
   CHECK(final.extra_matching_manual * 10 >= final.extra * 7);
