@@ -25,6 +25,9 @@ struct AnalyticParams {
   double direction_spread = 10.0 * degrees;
   // §3.1 "hundreds of sampled strokes".
   int perturbation_samples = 200;
+  // §3.1: each perturbed endpoint is "a uniform Gaussian with a deviation
+  // defined by our uncertainty radius δ"; per-axis deviation in units of δ.
+  double perturbation_deviation = 0.7071067811865476;
   std::uint64_t seed = 1;
   // Hand-tuned constants f of eq. 5 (paper: Figure 7, values not given).
   double f_vertex = 1.0;        // C°: scaffold vertex (a)
