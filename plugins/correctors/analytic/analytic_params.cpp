@@ -43,7 +43,10 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("ellipse_tolerance", &A::ellipse_tolerance, 0.0, 1.0, "", "elliptic-arc snap: largest deviation / major semi-axis (1 %)")
       .real("guideline_angle", &A::guideline_angle, 0.0, 45.0, "deg", "guideline stroke within this angle of a vanishing direction, §2.2 (3°)", degrees)
       .real("tick_length", &A::tick_length, 0.0, 10.0, "in", "dimension ticks are shorter than this, §2.3 (0.4 in)")
-      .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1");
+      .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1")
+      .boolean("remove_hooks", &A::remove_hooks, "cut a hook (a sharp flick) at either end of a stroke before inference (not in the paper)")
+      .real("hook_max_length", &A::hook_max_length, 0.001, 10.0, "in", "a hook spans at most this distance from its end (0.3 in)")
+      .real("hook_min_length", &A::hook_min_length, 0.0, 10.0, "in", "turns closer than this to an end are jitter, not hooks (0.025 in)");
   return table;
 }
 }  // namespace

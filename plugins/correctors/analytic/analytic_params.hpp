@@ -69,6 +69,12 @@ struct AnalyticParams {
   // Dimension ticks: straight strokes shorter than this (in) crossing a guideline.
   double tick_length = 0.4;
   bool reinfer_free = true;
+  // Hook removal before inference (not in the paper; kernel's
+  // find_hookless_range): a turn of 45° or more within hook_max_length of an
+  // end (and 15 % of the stroke), not closer than hook_min_length, is cut.
+  bool remove_hooks = true;
+  double hook_max_length = 0.3;   // in
+  double hook_min_length = 0.025; // in
 };
 
 std::vector<ParamSpec> parameter_specs();
