@@ -14,7 +14,7 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("collect_factor", &A::collect_factor, 0.5, 10.0, "δ", "constraints are collected within this many δ of the stroke (2)")
       .real("direction_spread", &A::direction_spread, 0.1, 90.0, "deg", "r_d = 1 − cos(this), §3.1 eq. 4 (10°)", degrees)
       .integer("perturbation_samples", &A::perturbation_samples, 1, 100000, "", "perturbed strokes voting for the segment, §3.1 (hundreds; 200)")
-      .real("perturbation_deviation", &A::perturbation_deviation, 0.0, 10.0, "δ", "per-axis deviation of a perturbed stroke end, §3.1 (1/√2: the variance of eq. 3's kernel)")
+      .real("perturbation_deviation", &A::perturbation_deviation, 0.01, 10.0, "δ", "per-axis deviation of a perturbed stroke end, §3.1 (1/√2: the variance of eq. 3's kernel)")
       .integer("seed", &A::seed, 0, 2147483647.0, "", "seed of the perturbation sampling")
       .real("f_vertex", &A::f_vertex, 0.0, 100.0, "", "eq. 5 f(C°) at a scaffold vertex (paper: hand-tuned, 1)")
       .real("f_intersection", &A::f_intersection, 0.0, 100.0, "", "eq. 5 f(C°) at a guideline/line intersection (1)")

@@ -17,7 +17,7 @@ Stroke2d make_stroke_2d(const Stroke& stroke, double dpi, const AnalyticParams& 
     s.points.push_back(q);
     times.push_back(smp.time);
   }
-  if (p.remove_hooks && s.points.size() >= 2) {
+  if (p.remove_hooks && s.points.size() >= 2 && p.hook_max_length * dpi > 0) {
     // Hooks (a flick at pen-down/up, kernel's find_hookless_range) are cut
     // before anything reads the ends: eq. 3 scores the endpoints only, and a
     // hook moves one by its length and breaks the straightness test.
