@@ -87,7 +87,7 @@ MetricInfo metric_info(const std::string& name) {
     const std::string kind = between(name, 3, recall ? 7 : 10);
     return percent("relations", kind + (recall ? " R" : " P"),
                    std::string(recall ? "Recall" : "Precision") + " of the ground truth's " + kind +
-                       " relations against those measured on the output.",
+                       " relations against those measured on the output (distances on the eye-scaled output where the session is one view).",
                    relations);
   }
   if (starts_with(name, "enforced_") && ends_with(name, "_residual_mean")) {

@@ -437,18 +437,24 @@ void ground_truth_metrics(const ReplayResult& r, const MetricsOptions& o, CaseMe
       if (!a || !b || (e.strokes.size() > 1 && *a == *b)) continue;
       intended[std::string(to_string(e.kind))].insert({std::min(*a, *b), std::max(*a, *b)});
     }
+  // Distances are judged at the scale of the intended shape: where one view
+  // leaves the scale open (eye-scaled alignment above), the output's
+  // distances count multiplied by that scale, so a scene recovered twice as
+  // large is not held to half the tolerance. Angles need no alignment.
+  const double tolerance = aligned && aligned->scale > 0 ? o.distance_tolerance / aligned->scale
+                                                         : o.distance_tolerance;
   for (std::size_t i = 0; i < strokes.size(); ++i) {
     const Curve& a = *first_curve(net, sketch, strokes[i]);
-    if (!is_straight(a) && plane_error(a, o.resample) < o.distance_tolerance)
+    if (!is_straight(a) && plane_error(a, o.resample) < tolerance)
       detected["planar"].insert({strokes[i], strokes[i]});
     for (std::size_t j = i + 1; j < strokes.size(); ++j) {
       const Curve& b = *first_curve(net, sketch, strokes[j]);
       const Key key{strokes[i], strokes[j]};
       const Box3 ba = bounding_box(a), bb = bounding_box(b);
       bool touching = false;
-      if (ba.exteriorDistance(bb) <= o.distance_tolerance) {
+      if (ba.exteriorDistance(bb) <= tolerance) {
         const Touch t = touch(a, b);
-        touching = t.distance <= o.distance_tolerance;
+        touching = t.distance <= tolerance;
         if (touching)
           detected[at_end(a, t.ta) && at_end(b, t.tb) ? "coincident_point" : "intersection"].insert(key);
       }

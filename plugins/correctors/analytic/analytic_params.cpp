@@ -14,6 +14,7 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("collect_factor", &A::collect_factor, 0.5, 10.0, "δ", "constraints are collected within this many δ of the stroke (2)")
       .real("direction_spread", &A::direction_spread, 0.1, 90.0, "deg", "r_d = 1 − cos(this), §3.1 eq. 4 (10°)", degrees)
       .integer("perturbation_samples", &A::perturbation_samples, 1, 100000, "", "perturbed strokes voting for the segment, §3.1 (hundreds; 200)")
+      .real("perturbation_deviation", &A::perturbation_deviation, 0.01, 10.0, "δ", "per-axis deviation of a perturbed stroke end, §3.1 (1/√2: the variance of eq. 3's kernel)")
       .integer("seed", &A::seed, 0, 2147483647.0, "", "seed of the perturbation sampling")
       .real("f_vertex", &A::f_vertex, 0.0, 100.0, "", "eq. 5 f(C°) at a scaffold vertex (paper: hand-tuned, 1)")
       .real("f_intersection", &A::f_intersection, 0.0, 100.0, "", "eq. 5 f(C°) at a guideline/line intersection (1)")
@@ -42,7 +43,10 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("ellipse_tolerance", &A::ellipse_tolerance, 0.0, 1.0, "", "elliptic-arc snap: largest deviation / major semi-axis (1 %)")
       .real("guideline_angle", &A::guideline_angle, 0.0, 45.0, "deg", "guideline stroke within this angle of a vanishing direction, §2.2 (3°)", degrees)
       .real("tick_length", &A::tick_length, 0.0, 10.0, "in", "dimension ticks are shorter than this, §2.3 (0.4 in)")
-      .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1");
+      .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1")
+      .boolean("remove_hooks", &A::remove_hooks, "cut a hook (a sharp flick) at either end of a stroke before inference (not in the paper)")
+      .real("hook_max_length", &A::hook_max_length, 0.001, 10.0, "in", "a hook spans at most this distance from its end (0.3 in)")
+      .real("hook_min_length", &A::hook_min_length, 0.0, 10.0, "in", "turns closer than this to an end are jitter, not hooks (0.025 in)");
   return table;
 }
 }  // namespace

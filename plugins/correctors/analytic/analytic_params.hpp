@@ -25,6 +25,9 @@ struct AnalyticParams {
   double direction_spread = 10.0 * degrees;
   // §3.1 "hundreds of sampled strokes".
   int perturbation_samples = 200;
+  // §3.1: each perturbed endpoint is "a uniform Gaussian with a deviation
+  // defined by our uncertainty radius δ"; per-axis deviation in units of δ.
+  double perturbation_deviation = 0.7071067811865476;
   std::uint64_t seed = 1;
   // Hand-tuned constants f of eq. 5 (paper: Figure 7, values not given).
   double f_vertex = 1.0;        // C°: scaffold vertex (a)
@@ -66,6 +69,12 @@ struct AnalyticParams {
   // Dimension ticks: straight strokes shorter than this (in) crossing a guideline.
   double tick_length = 0.4;
   bool reinfer_free = true;
+  // Hook removal before inference (not in the paper; kernel's
+  // find_hookless_range): a turn of 45° or more within hook_max_length of an
+  // end (and 15 % of the stroke), not closer than hook_min_length, is cut.
+  bool remove_hooks = true;
+  double hook_max_length = 0.3;   // in
+  double hook_min_length = 0.025; // in
 };
 
 std::vector<ParamSpec> parameter_specs();

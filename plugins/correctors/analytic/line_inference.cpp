@@ -269,6 +269,22 @@ std::optional<std::pair<Vec3, Vec3>> evaluate_triplet(const Triplet& t, const Li
   }
   if (!(std::abs(len) > 1e-6 * s.extent) || !std::isfinite(len)) return std::nullopt;
   const Vec3 q = p + len * d;
+  // A nearest point on a line (Figure 7d) positions an end only where the
+  // segment crosses that line. On a segment lying along the line (drawn over
+  // it), the nearest point is wherever the stroke ends, i.e. Figure 7's
+  // "nearest point along the projected direction": as Cᵗ it is the free
+  // distance constraint (enumerated once as such), and as C° with a known
+  // point for Cᵗ it is the triplet {that point, Cᵈ, free} seen from the other
+  // end. Counting those again would give a free end the weight of a snapped
+  // one in eq. 1's sum (and the more lines lie along the segment, the more).
+  const auto along = [&](const PointConstraint& pc) {
+    return pc.type == PointConstraint::Type::on_line &&
+           lies_on_line(s.lines[static_cast<std::size_t>(pc.line)], p, q, s.tolerance);
+  };
+  if (t.distance.type != DistanceConstraint::Type::free &&
+      (along(c.points[e][static_cast<std::size_t>(t.point)]) ||
+       along(c.points[o][static_cast<std::size_t>(t.distance.point)])))
+    return std::nullopt;
   if (!cam.project(q) || !cam.project(p)) return std::nullopt;
   if (e == 0) return std::make_pair(p, q);
   return std::make_pair(q, p);
@@ -425,7 +441,7 @@ LineInference infer_line(const Scaffold& s, const Camera& cam, const Stroke2d& s
   }
   std::vector<int> votes(g0.size(), 0);
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0 / std::sqrt(2.0));
+  std::normal_distribution<double> normal(0.0, p.perturbation_deviation);
   const int samples = std::max(1, p.perturbation_samples);
   for (int k = 0; k < samples; ++k) {
     check_budget();  // issue 17: the per-event time budget

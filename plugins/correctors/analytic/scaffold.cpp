@@ -145,6 +145,12 @@ bool within_line(const ScaffoldLine& l, double t, double tol) {
   return l.guide || (t >= -tol && t <= (l.b - l.a).norm() + tol);
 }
 
+bool lies_on_line(const ScaffoldLine& l, const Vec3& a, const Vec3& b, double tol) {
+  const Vec3 u = l.direction();
+  const auto off = [&](const Vec3& x) { return (x - l.a - (x - l.a).dot(u) * u).norm(); };
+  return off(a) <= tol && off(b) <= tol;
+}
+
 std::optional<Vec3> scaffold_crossing(const Scaffold& s, const ScaffoldLine& a, const ScaffoldLine& b) {
   const LineLineHit h = closest_line_line(a.a, a.direction(), b.a, b.direction());
   if (h.parallel || h.distance > s.tolerance) return std::nullopt;

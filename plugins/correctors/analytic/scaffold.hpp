@@ -63,6 +63,10 @@ LineLineHit closest_line_line(const Vec3& p, const Vec3& u, const Vec3& q, const
 // `tol`: guidelines are infinite, segments end at a and b.
 bool within_line(const ScaffoldLine& l, double t, double tol);
 
+// Whether the segment a–b lies on the (infinite) line of `l`: both ends
+// within `tol` metres of it.
+bool lies_on_line(const ScaffoldLine& l, const Vec3& a, const Vec3& b, double tol);
+
 // Where two scaffold lines meet (closer than s.tolerance, not parallel, and
 // within both segments): the point on `a`. The intersections the inference
 // snaps to (Figure 7b, c) and offers as known points.

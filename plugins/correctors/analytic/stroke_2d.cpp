@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sketchlab/preprocess/hooks.hpp"
+
 namespace sketchlab::analytic {
 
 Stroke2d make_stroke_2d(const Stroke& stroke, double dpi, const AnalyticParams& p) {
@@ -14,6 +16,25 @@ Stroke2d make_stroke_2d(const Stroke& stroke, double dpi, const AnalyticParams& 
     if (!s.points.empty() && (q - s.points.back()).norm() < 1e-9) continue;
     s.points.push_back(q);
     times.push_back(smp.time);
+  }
+  if (p.remove_hooks && s.points.size() >= 2 && p.hook_max_length * dpi > 0) {
+    // Hooks (a flick at pen-down/up, kernel's find_hookless_range) are cut
+    // before anything reads the ends: eq. 3 scores the endpoints only, and a
+    // hook moves one by its length and breaks the straightness test.
+    std::vector<Vec3> pts;
+    pts.reserve(s.points.size());
+    for (const Vec2& q : s.points) pts.emplace_back(q.x(), q.y(), 0.0);
+    HookParams hp;
+    hp.max_length = p.hook_max_length * dpi;
+    hp.min_length = std::min(p.hook_min_length * dpi, hp.max_length);
+    const IndexRange r = find_hookless_range(pts, hp);
+    if (r.first > 0 || r.last + 1 < s.points.size()) {
+      s.points = std::vector<Vec2>(s.points.begin() + static_cast<std::ptrdiff_t>(r.first),
+                                   s.points.begin() + static_cast<std::ptrdiff_t>(r.last) + 1);
+      times = std::vector<double>(times.begin() + static_cast<std::ptrdiff_t>(r.first),
+                                  times.begin() + static_cast<std::ptrdiff_t>(r.last) + 1);
+      s.hooks_cut = true;
+    }
   }
   const std::size_t n = s.points.size();
   std::vector<double> speed(n > 0 ? n - 1 : 0);

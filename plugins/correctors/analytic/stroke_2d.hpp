@@ -16,6 +16,7 @@ struct Stroke2d {
   // for the many distance queries of eq. 7.
   std::vector<Vec2> coarse;
   std::vector<double> coarse_delta;
+  bool hooks_cut = false;     // a hook was cut at an end (AnalyticParams::remove_hooks)
 };
 
 // δ_i = Lerp(v_i/v_max, δ_min, δ_max) in pixels (eq. 3), v_i in in/s from

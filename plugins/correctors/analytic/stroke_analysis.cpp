@@ -83,6 +83,7 @@ StrokeOutcome analyse_stroke(const Stroke& stroke, const Scaffold& s, const Sket
     out.stats["free"] = 1;
     return out;
   }
+  if (s2.hooks_cut) out.stats["hook_cut"] = 1;
   const Vec3 up = sketch.workspace.up.normalized();
   if (aids && !s.vertices.empty()) {
     if (const auto g = detect_guideline(s, cam, s2, p, stroke.layer == Layer::guide)) {

@@ -56,7 +56,8 @@ struct PrecisionRecall {
 //     two or more eye positions the views fix the scale: use the raw figure)
 //   gt_<kind>_precision, gt_<kind>_recall: relations of the track's
 //     RelationEvents against those measured on the output over all pairs of
-//     live strokes (touching within distance_tolerance: coincident_point when
+//     live strokes (touching within distance_tolerance, of the eye-scaled
+//     output where that alignment is present: coincident_point when
 //     at both curves' ends, else intersection; parallel, equal_length among
 //     straight curves; perpendicular among touching straight curves; planar
 //     for single non-straight curves). Parallel and equal_length are compared

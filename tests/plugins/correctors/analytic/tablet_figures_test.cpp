@@ -32,12 +32,13 @@ struct Figures {
 TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet sessions", "[analytic][tablet][slow]") {
   // Figures reached at seed 1, default noise (README), with a margin.
   const std::map<std::string, Figures> expected{
-      {"cube_analytic", {0.0035, 0.45, 0.40, 0.70, 0.83}},
-      {"chair_analytic", {0.0020, 0.95, 0.85, 0.75, 0.74}},
-      {"mug_analytic", {0.0042, 0.83, 0.60, 0.73, 0.79}},
+      {"cube_analytic", {0.0040, 0.75, 0.80, 0.95, 0.83}},
+      {"chair_analytic", {0.0022, 0.95, 0.95, 0.95, 0.76}},
+      // The handle takes a third constraint point at another depth (README).
+      {"mug_analytic", {0.0065, 0.85, 0.60, 0.68, 0.76}},
       // The shade is placed by dimension ticks from the arm end (before
       // them: 61 mm, worse than freehand's 42 mm).
-      {"lamp_analytic", {0.019, 0.27, 0.20, 0.73, 0.57}},
+      {"lamp_analytic", {0.018, 0.33, 0.16, 0.69, 0.55}},
   };
   std::vector<fs::path> recordings;
   for (const auto& [name, f] : expected) recordings.push_back(test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
@@ -75,7 +76,7 @@ TEST_CASE("analytic is exact on noise-free analytic-style sessions of boxes", "[
   // arched rail and the mug's handle take tangents close to, not equal to,
   // the intended ones; the lamp's bottom shade cross starts at a tick
   // another known point's projection hides.
-  const std::map<std::string, double> mean_max{{"chair", 1.2e-4}, {"mug", 4e-4}, {"lamp", 4e-3}};
+  const std::map<std::string, double> mean_max{{"chair", 1.2e-4}, {"mug", 4e-4}, {"lamp", 3.6e-3}};
   for (const std::string& model : models) {
     INFO(model);
     const auto& a = cases.at({model, "analytic"});
