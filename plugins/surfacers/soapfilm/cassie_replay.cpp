@@ -160,7 +160,8 @@ std::vector<TimingPair> timing_pairs(const CassieSession& session, const std::ve
       }
       if (p.ours)
         for (const auto& [id, x] : made)
-          if (x.strokes == strokes && x.removed_at && *x.removed_at < *p.ours && opening.count(*x.removed_at) &&
+          if (x.strokes == strokes && x.group < *p.ours && x.removed_at && *x.removed_at <= *p.ours &&
+              opening.count(*x.removed_at) &&
               opening[*x.removed_at]->kind == "stroke")
             p.ours_broken_before = true;
       out.push_back(std::move(p));
