@@ -113,11 +113,9 @@ std::vector<TimingPair> timing_pairs(const CassieSession& session, const std::ve
     if ((e.kind == "stroke" || e.kind == "delete") && !opening.count(e.group)) opening[e.group] = &e;
   std::map<std::int64_t, const CassieStroke*> stroke;
   for (const CassieStroke& s : session.strokes) stroke[s.id] = &s;
-  std::map<std::int64_t, std::size_t> created_in;  // CASSIE stroke -> the group that added it
+  std::map<double, std::size_t> stroke_group;  // a stroke event's time -> its group
   for (const ReplayEvent& e : events)
-    if (e.kind == "stroke")
-      for (const CassieStroke& s : session.strokes)
-        if (s.created == e.time) created_in.emplace(s.id, e.group);
+    if (e.kind == "stroke") stroke_group.emplace(e.time, e.group);
   std::set<StrokeSet> cassie_ever, ours_ever, keys;
   for (const auto& [key, n] : cassie_at) cassie_ever.insert(key.second);
   for (const auto& [key, n] : ours_at) ours_ever.insert(key.second);
@@ -133,7 +131,8 @@ std::vector<TimingPair> timing_pairs(const CassieSession& session, const std::ve
     for (std::int64_t s : strokes)
       if (stroke.count(s) && (!stroke.count(base.youngest) || stroke[s]->created > stroke[base.youngest]->created))
         base.youngest = s;
-    base.youngest_group = created_in.count(base.youngest) ? created_in[base.youngest] : 0;
+    if (stroke.count(base.youngest) && stroke_group.count(stroke[base.youngest]->created))
+      base.youngest_group = stroke_group[stroke[base.youngest]->created];
     for (std::size_t k = 0; k < std::max(theirs.size(), mine.size()); ++k) {
       TimingPair p = base;
       if (k < theirs.size()) p.cassie = theirs[k];

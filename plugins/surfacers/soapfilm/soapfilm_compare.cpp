@@ -63,7 +63,7 @@ struct Row {
   std::vector<AstrayMiss> astray;
   std::vector<ExtraPatch> extras;
   std::vector<TimingPair> timing;
-  std::vector<ReplayEvent> events_of;  // kind and element of each event, for --timing
+  std::map<std::size_t, std::string> event_name;  // group -> "kind stroke" of its event, for --timing
   int events = 0;
 };
 
@@ -172,13 +172,7 @@ int main(int argc, char** argv) {
       row.extras = r.extras;
       row.timing = r.timing;
       for (const ReplayEvent& e : r.events)
-        if (e.kind == "stroke" || e.kind == "delete") {
-          ReplayEvent brief;
-          brief.kind = e.kind;
-          brief.element = e.element;
-          brief.group = e.group;
-          row.events_of.push_back(std::move(brief));
-        }
+        if (e.kind == "stroke" || e.kind == "delete") row.event_name.emplace(e.group, e.kind + ' ' + std::to_string(e.element));
       row.events = static_cast<int>(r.events.size());
       for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
       for (std::size_t i = 0; i < r.events.size(); ++i) {
@@ -359,9 +353,8 @@ int main(int argc, char** argv) {
       if (r.system != 2) continue;
       auto event = [&](const std::optional<std::size_t>& g) {
         if (!g) return std::string("–");
-        const auto e = std::find_if(r.events_of.begin(), r.events_of.end(),
-                                    [&](const ReplayEvent& x) { return x.group == *g; });
-        return std::to_string(*g) + (e == r.events_of.end() ? "" : " (" + e->kind + ' ' + std::to_string(e->element) + ")");
+        const auto e = r.event_name.find(*g);
+        return std::to_string(*g) + (e == r.event_name.end() ? "" : " (" + e->second + ")");
       };
       for (const TimingPair& p : r.timing) {
         std::string strokes;
