@@ -93,6 +93,82 @@ ExtraPatch describe(const Network& net, const Patch& p, const CycleSearchParams&
   return base;
 }
 
+// TimingPair: for each stroke set created unmatched on both sides, the
+// creations paired in time order.
+std::vector<TimingPair> timing_pairs(const CassieSession& session, const std::vector<ReplayEvent>& events,
+                                     const std::map<PatchId, ExtraPatch>& made,
+                                     const std::map<std::pair<std::size_t, StrokeSet>, int>& cassie_at,
+                                     const std::map<std::pair<std::size_t, StrokeSet>, int>& ours_at) {
+  std::map<StrokeSet, std::vector<std::size_t>> cassie_left, ours_left;
+  auto unmatched = [](const auto& from, const auto& other, auto& into) {
+    for (const auto& [key, n] : from) {
+      const auto o = other.find(key);
+      for (int k = o == other.end() ? 0 : o->second; k < n; ++k) into[key.second].push_back(key.first);
+    }
+  };
+  unmatched(cassie_at, ours_at, cassie_left);
+  unmatched(ours_at, cassie_at, ours_left);
+  std::map<std::size_t, const ReplayEvent*> opening;  // group -> its stroke or delete event
+  for (const ReplayEvent& e : events)
+    if ((e.kind == "stroke" || e.kind == "delete") && !opening.count(e.group)) opening[e.group] = &e;
+  std::map<std::int64_t, const CassieStroke*> stroke;
+  for (const CassieStroke& s : session.strokes) stroke[s.id] = &s;
+  std::map<double, std::size_t> stroke_group;  // a stroke event's time -> its group
+  for (const ReplayEvent& e : events)
+    if (e.kind == "stroke") stroke_group.emplace(e.time, e.group);
+  std::set<StrokeSet> cassie_ever, ours_ever, keys;
+  for (const auto& [key, n] : cassie_at) cassie_ever.insert(key.second);
+  for (const auto& [key, n] : ours_at) ours_ever.insert(key.second);
+  for (const auto& [strokes, g] : cassie_left)
+    if (ours_ever.count(strokes)) keys.insert(strokes);
+  for (const auto& [strokes, g] : ours_left)
+    if (cassie_ever.count(strokes)) keys.insert(strokes);
+  std::vector<TimingPair> out;
+  for (const StrokeSet& strokes : keys) {
+    const std::vector<std::size_t> theirs = cassie_left[strokes], mine = ours_left[strokes];
+    TimingPair base;
+    base.strokes = strokes;
+    for (std::int64_t s : strokes)
+      if (stroke.count(s) && (!stroke.count(base.youngest) || stroke[s]->created > stroke[base.youngest]->created))
+        base.youngest = s;
+    if (stroke.count(base.youngest) && stroke_group.count(stroke[base.youngest]->created))
+      base.youngest_group = stroke_group[stroke[base.youngest]->created];
+    for (std::size_t k = 0; k < std::max(theirs.size(), mine.size()); ++k) {
+      TimingPair p = base;
+      if (k < theirs.size()) p.cassie = theirs[k];
+      if (k < mine.size()) p.ours = mine[k];
+      if (p.cassie) {
+        const std::size_t g = *p.cassie;
+        if (const auto e = opening.find(g); e != opening.end()) {
+          const ReplayEvent& ev = *e->second;
+          StrokeSet own;
+          for (const CassieStroke& s : session.strokes)
+            if (s.created == ev.time) own.insert(s.id);
+          const bool in_cycle = std::any_of(own.begin(), own.end(), [&](std::int64_t s) { return strokes.count(s); });
+          p.met_at_cassie = !in_cycle && std::any_of(ev.met.begin(), ev.met.end(), [&](std::int64_t s) {
+            return strokes.count(s) && !own.count(s);
+          });
+        }
+        for (const auto& [id, x] : made)
+          if (x.strokes == strokes && x.group < g && (!x.removed_at || *x.removed_at >= g)) p.ours_alive_at_cassie = true;
+        for (const auto& [id, x] : made)
+          if (x.strokes == strokes && x.removed_at == g) p.ours_removed_at_cassie = true;
+        for (const auto& [key, n] : cassie_at)
+          if (key.second == strokes && key.first < g) p.cassie_made_before = true;
+        p.ours_same_event = ours_at.count({g, strokes}) > 0;
+      }
+      if (p.ours)
+        for (const auto& [id, x] : made)
+          if (x.strokes == strokes && x.group < *p.ours && x.removed_at && *x.removed_at <= *p.ours &&
+              opening.count(*x.removed_at) &&
+              opening[*x.removed_at]->kind == "stroke")
+            p.ours_broken_before = true;
+      out.push_back(std::move(p));
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 Stroke placeholder_stroke(StrokeId id) {
@@ -258,6 +334,13 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
 
     // What changed: patch ids are never reused, so a diff of the id sets.
     const Network& net = live.sketch().network;
+    if (st.kind == "stroke" && report.error.empty() && !live.sketch().history.done.empty())
+      for (const HistoryStep& h : live.sketch().history.done.back().steps)
+        for (const auto* list : {&h.forward.nodes_added, &h.forward.nodes_replaced})
+          for (const Node& n : *list)
+            for (const NodeIncidence& inc : n.incidences)
+              if (const auto it = curves.cassie_of.find(inc.curve); it != curves.cassie_of.end())
+                ev.met.insert(it->second);
     for (auto it = ours.begin(); it != ours.end();) {
       if (net.patches().count(it->first)) {
         ++it;
@@ -390,6 +473,7 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
         --extra;
       }
   }
+  result.timing = timing_pairs(session, result.events, made, cassie_at, ours_at);
   // At the end.
   std::set<StrokeSet> ours_final;
   for (const auto& [id, strokes] : ours)

@@ -68,6 +68,7 @@ struct ReplayEvent {
   std::size_t group = 0;  // index of its time group (stroke events only share groups)
   std::string error;      // what the session reported, if anything
   std::vector<StrokeSet> added, removed;  // our automatic patches (strokes)
+  StrokeSet met;  // CASSIE strokes with a node this event added or replaced (its own included)
   double surfacer_wall_ms = 0.0, surfacer_cpu_ms = 0.0;  // this plugin's update/command
   int patches_meshed = 0;
   std::vector<PatchMeshTimings> meshed;  // per patch meshed: CPU ms of each stage
@@ -101,11 +102,35 @@ struct ExtraPatch {
   std::optional<std::size_t> removed_at;  // group where we removed it, if we did
 };
 
+// A cycle made at one event by CASSIE and at another by us (the pairs of
+// ReplayCauses::miss_elsewhere and extra_elsewhere), with what happened at
+// each of the two events. For each stroke set, CASSIE's unmatched creations
+// and ours are paired in time order; a creation left over has no pair.
+struct TimingPair {
+  StrokeSet strokes;
+  std::optional<std::size_t> cassie, ours;  // the two groups
+  std::int64_t youngest = 0;   // the cycle's stroke created last
+  std::size_t youngest_group = 0;  // the group that created it
+  // At CASSIE's group: its event's strokes met a stroke of the cycle
+  // (made or reused a node on it) without being in it; one of our patches
+  // over these strokes was alive when it began; we removed one there;
+  // CASSIE had made a patch over these strokes at an earlier group.
+  bool met_at_cassie = false, ours_alive_at_cassie = false, ours_removed_at_cassie = false,
+       cassie_made_before = false;
+  // We made a patch over the same strokes at CASSIE's group too (matched to
+  // another of CASSIE's there: two cycles over one stroke set).
+  bool ours_same_event = false;
+  // At our group: an earlier patch of ours over these strokes was broken by
+  // a stroke (removed at a stroke event), so ours is a remake.
+  bool ours_broken_before = false;
+};
+
 struct ReplayResult {
   std::vector<ReplayEvent> events;  // in replay order
   ReplayFigures figures;
   std::vector<AstrayMiss> astray;  // figures.causes.miss_not_found of them
   std::vector<ExtraPatch> extras;  // figures.causes.extra_other of them
+  std::vector<TimingPair> timing;  // the cycles made at another event, both ways
   std::vector<std::string> warnings;  // the session loader's and the replay's
   Network network;  // the replay's network at the end
 };

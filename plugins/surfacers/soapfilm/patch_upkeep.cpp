@@ -101,19 +101,6 @@ class CycleFilter {
   std::map<int, int> bounding_;  // segment -> patches it bounds
 };
 
-// Whether every boundary piece is still exactly one graph segment (CASSIE
-// keeps a patch whose cycle is found again with the same segment ids).
-bool unchanged(CurveGraph& graph, const std::vector<OrientedSegment>& boundary) {
-  for (const OrientedSegment& piece : boundary) {
-    const std::vector<int> cover = graph.covered_by(piece);
-    if (cover.size() != 1) return false;
-    const GraphSegment& g = graph.segment(cover.front());
-    const bool same = (g.t0 == piece.t_from && g.t1 == piece.t_to) || (g.t0 == piece.t_to && g.t1 == piece.t_from);
-    if (!same) return false;
-  }
-  return true;
-}
-
 // Item 25: from `h` (leaving the cycle), the cycle is reached again through
 // at most `reach` two-segment nodes.
 bool reaches(CurveGraph& graph, HalfEdge h, const std::set<NodeId>& cycle_nodes, int reach) {
@@ -233,7 +220,11 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
                                          [&](const OrientedSegment& p) { return replaced.count(p.curve); });
     const std::vector<int> key = boundary_key(graph, patch.boundary);
     if (!on_replaced && !key.empty() && !broken_by(graph, patch, key, fresh, params.break_reach)) continue;
-    broken[id] = on_replaced || !unchanged(graph, patch.boundary) ? std::vector<int>{} : key;
+    // Found again over the same pieces of curve, it keeps its identity
+    // (item 25), also where this edit's nodes split a piece: CASSIE logs no
+    // new patch for such a cycle (0 of the 26 the former rule remade at a
+    // stroke event in the bundled sessions; README, ninth round).
+    broken[id] = on_replaced ? std::vector<int>{} : key;
     for (const OrientedSegment& piece : patch.boundary) {
       if (!net.find_curve(piece.curve)) continue;
       if (const std::vector<int> cover = graph.covered_by(piece); !cover.empty()) {

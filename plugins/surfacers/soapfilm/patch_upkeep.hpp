@@ -16,7 +16,8 @@
 //    read from the edits in the sketch's history) are searched again;
 //  - two walks per seed (CycleSearcher::search_segment); a cycle over the
 //    segments of an existing patch is a duplicate, and a broken patch whose
-//    cycle is found again unchanged keeps its identity; a cycle over a
+//    cycle is found again over the same pieces of curve (split or not by the
+//    edit's nodes) keeps its identity; a cycle over a
 //    segment that already bounds two patches is refused (item 24; thesis
 //    §3.3.2.2).
 // The cost is local: the graph (CurveGraph) is built lazily for the curves the

@@ -1,5 +1,5 @@
 // soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
-//                  [--left-over-nodes] [--events CSV] [--astray] [--extras]
+//                  [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -20,7 +20,8 @@
 // lists every CASSIE patch no walk closes over, with the node where the
 // walks leave it (replay_causes.hpp, Departure); --extras lists every
 // patch of ours CASSIE never made ("other" extras: cassie_replay.hpp,
-// ExtraPatch) and counts their traits.
+// ExtraPatch) and counts their traits; --timing lists every cycle CASSIE
+// made at one event and we at another (cassie_replay.hpp, TimingPair).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -61,6 +62,8 @@ struct Row {
   NodeAgreement nodes;  // the replay's final graph against CASSIE's exported one
   std::vector<AstrayMiss> astray;
   std::vector<ExtraPatch> extras;
+  std::vector<TimingPair> timing;
+  std::map<std::size_t, std::string> event_name;  // group -> "kind stroke" of its event, for --timing
   int events = 0;
 };
 
@@ -87,7 +90,7 @@ int main(int argc, char** argv) {
   std::map<std::string, ParamValue> given;
   ReplayOptions options;
   std::string events_csv;
-  bool list_astray = false, list_extras = false;
+  bool list_astray = false, list_extras = false, list_timing = false;
   const std::vector<ParamSpec> specs = soapfilm_param_specs();
   bool dir_given = false;
   try {
@@ -109,9 +112,11 @@ int main(int argc, char** argv) {
         list_astray = true;
       } else if (a == "--extras") {
         list_extras = true;
+      } else if (a == "--timing") {
+        list_timing = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray] [--extras]\n";
+                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
@@ -165,6 +170,9 @@ int main(int argc, char** argv) {
         row.nodes = compare_graph_nodes(load_cassie_network(graph).network, r.network);
       row.astray = r.astray;
       row.extras = r.extras;
+      row.timing = r.timing;
+      for (const ReplayEvent& e : r.events)
+        if (e.kind == "stroke" || e.kind == "delete") row.event_name.emplace(e.group, e.kind + ' ' + std::to_string(e.element));
       row.events = static_cast<int>(r.events.size());
       for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
       for (std::size_t i = 0; i < r.events.size(); ++i) {
@@ -329,6 +337,54 @@ int main(int argc, char** argv) {
       }
     }
     std::cout << "\n| extras (other), Patch sessions | " << listed << " |\n|---|---|\n";
+    for (const auto& [trait, n] : traits) std::cout << "| " << trait << " | " << n << " |\n";
+    std::cout << "\n";
+  }
+
+  if (list_timing) {
+    // One row per cycle made at one event by CASSIE and at another by us
+    // (cassie_replay.hpp, TimingPair), then how many share each trait.
+    std::cout << "| session | strokes | our event | CASSIE's event | ours − CASSIE's (events) | youngest stroke (event) "
+                 "| CASSIE's event met the cycle | ours alive at CASSIE's | we removed it at CASSIE's "
+                 "| CASSIE made it before | ours at CASSIE's event too | ours a remake after a break |\n"
+              << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::map<std::string, int> traits;
+    for (const Row& r : rows) {
+      if (r.system != 2) continue;
+      auto event = [&](const std::optional<std::size_t>& g) {
+        if (!g) return std::string("–");
+        const auto e = r.event_name.find(*g);
+        return std::to_string(*g) + (e == r.event_name.end() ? "" : " (" + e->second + ")");
+      };
+      for (const TimingPair& p : r.timing) {
+        std::string strokes;
+        for (std::int64_t s : p.strokes) strokes += (strokes.empty() ? "" : " ") + std::to_string(s);
+        const long gap = p.cassie && p.ours ? long(*p.ours) - long(*p.cassie) : 0;
+        std::cout << "| " << r.session << " | " << strokes << " | " << event(p.ours) << " | " << event(p.cassie)
+                  << " | " << (p.cassie && p.ours ? std::to_string(gap) : std::string("–")) << " | " << p.youngest
+                  << " (" << p.youngest_group << ") | " << p.met_at_cassie << " | " << p.ours_alive_at_cassie << " | "
+                  << p.ours_removed_at_cassie << " | " << p.cassie_made_before << " | " << p.ours_same_event << " | "
+                  << p.ours_broken_before << " |\n";
+        const bool both = p.cassie && p.ours;
+        traits["pairs"] += both;
+        traits["CASSIE's left unpaired"] += p.cassie && !p.ours;
+        traits["ours left unpaired"] += p.ours && !p.cassie;
+        traits["CASSIE's unpaired, ours made at its event too (two cycles over one stroke set)"] +=
+            p.cassie && !p.ours && p.ours_same_event;
+        traits["ours unpaired, a remake after a stroke broke ours (CASSIE kept or never broke its)"] +=
+            p.ours && !p.cassie && p.ours_broken_before;
+        traits["pairs, ours a remake after a stroke broke ours"] += both && p.ours_broken_before;
+        if (!both) continue;
+        traits["ours before CASSIE's"] += gap < 0;
+        traits["youngest stroke arrived at our event"] += p.youngest_group == *p.ours;
+        traits["youngest stroke arrived at CASSIE's event"] += p.youngest_group == *p.cassie;
+        traits["CASSIE's event met the cycle"] += p.met_at_cassie;
+        traits["ours alive at CASSIE's event"] += p.ours_alive_at_cassie;
+        traits["we removed ours at CASSIE's event"] += p.ours_removed_at_cassie;
+        traits["CASSIE made it before"] += p.cassie_made_before;
+      }
+    }
+    std::cout << "\n| made at another event, Patch sessions | count |\n|---|---|\n";
     for (const auto& [trait, n] : traits) std::cout << "| " << trait << " | " << n << " |\n";
     std::cout << "\n";
   }

@@ -30,6 +30,17 @@ bool closed_chain(const Patch& p) {
   return !p.boundary.empty();
 }
 
+// A square of side a in z = 0 (curves 1-4, nodes at the corners), then a
+// line across it from the middle of edge 1 to the middle of edge 3.
+std::vector<PreparedCurve> square_and_crossing_line(double a) {
+  const Vec3 p00(0, 0, 0), p10(a, 0, 0), p11(a, a, 0), p01(0, a, 0);
+  return {{make_line(p00, p10), {0.0, 1.0}},
+          {make_line(p10, p11), {0.0, 1.0}},
+          {make_line(p11, p01), {0.0, 1.0}},
+          {make_line(p01, p00), {0.0, 1.0}},
+          {make_line(Vec3(a / 2, 0, 0), Vec3(a / 2, a, 0)), {0.0, 1.0}}};
+}
+
 }  // namespace
 
 TEST_CASE("node frame: plane through the centroid, sharp nodes, collinear fallback", "[soapfilm]") {
@@ -198,14 +209,7 @@ TEST_CASE("seed_split_segments: the circles the sides end on are searched too, c
 }
 
 TEST_CASE("a crossing curve splits a patch in two, deleting it merges them back", "[soapfilm]") {
-  const double a = 0.2;
-  const Vec3 p00(0, 0, 0), p10(a, 0, 0), p11(a, a, 0), p01(0, a, 0);
-  std::vector<PreparedCurve> curves{{make_line(p00, p10), {0.0, 1.0}},
-                                    {make_line(p10, p11), {0.0, 1.0}},
-                                    {make_line(p11, p01), {0.0, 1.0}},
-                                    {make_line(p01, p00), {0.0, 1.0}},
-                                    // across the square, edge 1 middle to edge 3 middle
-                                    {make_line(Vec3(a / 2, 0, 0), Vec3(a / 2, a, 0)), {0.0, 1.0}}};
+  const std::vector<PreparedCurve> curves = square_and_crossing_line(0.2);
   {
     // The app's rules: the broken square's segment is searched again on both
     // sides, and outside it the walk goes round the sheet's border.
@@ -251,6 +255,27 @@ TEST_CASE("a crossing curve splits a patch in two, deleting it merges them back"
   CHECK(del2.error == "");
   CHECK(del2.patches_added == 0);
   CHECK(s.network().patches().empty());
+}
+
+TEST_CASE("a crossed patch found again over the same pieces of curve keeps its identity", "[soapfilm]") {
+  // Item 25: a cycle re-found keeps its patch. The crossing line splits two
+  // of the square's edges, and the walk on the square's outer side closes
+  // the square again over those split pieces: the patch stays (its id, its
+  // mesh), and only the two halves are new. (The former rule, "same graph
+  // segments", removed it and made it again: 1 removed, 3 added.)
+  PreparedSession s(square_and_crossing_line(0.2));
+  s.draw_all(4);
+  REQUIRE(s.network().patches().size() == 1);
+  const PatchId square = s.network().patches().begin()->first;
+  const Patch before = s.network().patches().at(square);
+
+  const StepReport cross = s.draw(5);
+  CHECK(cross.error == "");
+  CHECK(cross.patches_removed == 0);
+  CHECK(cross.patches_added == 2);
+  REQUIRE(s.network().patches().count(square));
+  CHECK(s.network().patches().at(square) == before);
+  CHECK(patch_curves(s.network()) == std::multiset<std::set<CurveId>>{{1, 2, 3, 4}, {1, 2, 3, 5}, {1, 3, 4, 5}});
 }
 
 TEST_CASE("deleting a cube edge removes exactly its two faces", "[soapfilm]") {

@@ -25,7 +25,7 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   soapfilm::NodeAgreement nodes, nodes_left_over;
   soapfilm::ReplayOptions left_over;
   left_over.graph.reuse_left_over = true;
-  int sessions = 0, patch_sessions = 0;
+  int sessions = 0, patch_sessions = 0, remade = 0;
   for (const auto& f : std::filesystem::directory_iterator(dir / "sketch_history")) {
     if (f.path().extension() != ".json") continue;  // the folder's README
     const std::string name = f.path().stem().string();
@@ -79,6 +79,22 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
       CHECK(x.max_degree >= 2);
       if (x.removed_at) CHECK(*x.removed_at >= x.group);
     }
+    // Each cycle made at another event than CASSIE's listed once from each
+    // side (cassie_replay.hpp, TimingPair).
+    int timing_cassie = 0, timing_ours = 0;
+    for (const soapfilm::TimingPair& p : r.timing) {
+      CHECK((p.cassie || p.ours));
+      timing_cassie += p.cassie.has_value();
+      timing_ours += p.ours.has_value();
+    }
+    CHECK(timing_cassie == c.miss_elsewhere);
+    CHECK(timing_ours == c.extra_elsewhere);
+    // A stroke event that removes a patch and makes one over the same
+    // strokes again (CASSIE logs no such remake; ninth round).
+    for (const soapfilm::ReplayEvent& e : r.events)
+      if (e.kind == "stroke")
+        for (const soapfilm::StrokeSet& s : e.added)
+          remade += std::count(e.removed.begin(), e.removed.end(), s) > 0;
     replay += r.figures;
   }
   CHECK(sessions == 18);
@@ -93,17 +109,18 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.cassie_created == 1727);
   CHECK(replay.cassie_broken == 362);
   // Measured: final 356/479 (74.3 %), precision 356/505 (70.5 %); replay
-  // created 1412/1727 (81.8 %), precision 80.0 %; at the end 407/480
-  // (84.8 %), precision 86.4 % (eighth round: 402/480, 86.1 % before a
-  // deletion searched the segments left of the patches it took away);
-  // 323 of CASSIE's 362 breaks made by us at the same event. The
-  // whole-network search on the replay's own final network: 385/480.
+  // created 1412/1727 (81.8 %), precision 1412/1755 (80.5 %); at the end
+  // 407/480 (84.8 %), precision 407/473 (86.0 %) (ninth round: a crossed
+  // patch found again over split pieces keeps its identity; before, 1764
+  // made, 80.0 %, and 407/471, 86.4 %); 321 of CASSIE's 362 breaks made by
+  // us at the same event. The whole-network search on the replay's own
+  // final network: 385/480.
   CHECK(final.found >= 352);
   CHECK(double(final.found) / final.ours >= 0.70);
   CHECK(replay.recall_created() >= 0.815);
-  CHECK(replay.precision_created() >= 0.795);
+  CHECK(replay.precision_created() >= 0.80);
   CHECK(replay.recall_final() >= 0.845);
-  CHECK(replay.precision_final() >= 0.86);
+  CHECK(replay.precision_final() >= 0.855);
   CHECK(replay.matched_broken >= 318);
   CHECK(replay.rebuilt_found >= 380);
   // Measured 1072/1076 and 1060/1065 (default), 957/1076 and 945/1068
@@ -123,9 +140,19 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.causes.miss_not_closed <= 88);
   CHECK(replay.causes.miss_not_found <= 90);
   CHECK(replay.causes.end_removed_by_crossing <= 25);
-  // Our patches CASSIE never made, at any event or by hand (eighth round):
-  // measured 180.
-  CHECK(replay.causes.extra_other <= 185);
+  // Our patches CASSIE never made, at any event or by hand: measured 186
+  // (eighth round 180; the ninth round's kept identities change which
+  // patch the users' deletions hit in 01-2-1, +6 there).
+  CHECK(replay.causes.extra_other <= 190);
+  // Timing (ninth round): CASSIE's patches made by us at another event,
+  // measured 67, and ours CASSIE made at another event, 99 (117 when a
+  // crossed patch found again over split pieces was made anew). Stroke
+  // events that remove a patch and make one over the same strokes: 26
+  // then (all 18 sessions), 5 now (the new cycle runs over other pieces
+  // of those strokes).
+  CHECK(replay.causes.miss_elsewhere <= 70);
+  CHECK(replay.causes.extra_elsewhere <= 104);
+  CHECK(remade <= 5);
   // Most extra cycles on the final networks are patches CASSIE's users had
   // to add by hand (the original missed them).
   CHECK(final.extra_matching_manual * 10 >= final.extra * 7);
