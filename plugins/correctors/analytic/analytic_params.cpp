@@ -48,7 +48,7 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("hook_max_length", &A::hook_max_length, 0.001, 10.0, "in", "a hook spans at most this distance from its end (0.3 in)")
       .real("hook_min_length", &A::hook_min_length, 0.0, 10.0, "in", "turns closer than this to an end are jitter, not hooks (0.025 in)")
       .real("hook_max_bend", &A::hook_max_bend, 0.0, 1.0, "",
-            "a hook is straight: its halves turn by at most this fraction of the turn at the cut (0.2; 1 = no test)");
+            "a hook is straight: its halves turn by at most this fraction of the turn at the cut (0.2; at 1 a hook may bend as much as it turns)");
   return table;
 }
 }  // namespace
