@@ -72,6 +72,12 @@ std::size_t start_hook(const std::vector<Vec3>& p, const HookParams& hp) {
     const std::size_t bh = backward_at(p, i, 0.5 * a);
     if (fh == n || bh == n) continue;
     if (angle_between(fit_direction(p, bh, i), fit_direction(p, i, fh)) < hp.min_angle) continue;
+    if (std::isfinite(hp.max_bend_ratio) && a >= 2.0 * hp.min_length) {
+      std::size_t m = 1;
+      while (m < i && (p[m] - p[0]).norm() < 0.5 * a) ++m;
+      if (m < i && angle_between(fit_direction(p, 0, m), fit_direction(p, m, i)) > hp.max_bend_ratio * turn)
+        continue;
+    }
     best_turn = turn;
     best = i;
   }
@@ -96,10 +102,11 @@ IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams
   if (!(params.max_length > 0.0) || !std::isfinite(params.max_length) ||
       !(params.min_length >= 0.0) || !(params.min_length <= params.max_length) ||
       !(params.max_fraction >= 0.0 && params.max_fraction < 0.5) ||
-      !(params.min_angle > 0.0 && params.min_angle < 3.14159265358979)) {
+      !(params.min_angle > 0.0 && params.min_angle < 3.14159265358979) ||
+      !(params.max_bend_ratio >= 0.0)) {
     throw std::invalid_argument(
         "find_hookless_range: need 0 <= min_length <= max_length (finite, > 0), "
-        "max_fraction in [0, 0.5), min_angle in (0, π)");
+        "max_fraction in [0, 0.5), min_angle in (0, π), max_bend_ratio >= 0");
   }
   IndexRange r{0, n - 1};
   r.first = start_hook(points, params);

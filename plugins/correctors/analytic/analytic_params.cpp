@@ -46,7 +46,9 @@ const ParamTable<AnalyticParams>& parameters() {
       .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1")
       .boolean("remove_hooks", &A::remove_hooks, "cut a hook (a sharp flick) at either end of a stroke before inference (not in the paper)")
       .real("hook_max_length", &A::hook_max_length, 0.001, 10.0, "in", "a hook spans at most this distance from its end (0.3 in)")
-      .real("hook_min_length", &A::hook_min_length, 0.0, 10.0, "in", "turns closer than this to an end are jitter, not hooks (0.025 in)");
+      .real("hook_min_length", &A::hook_min_length, 0.0, 10.0, "in", "turns closer than this to an end are jitter, not hooks (0.025 in)")
+      .real("hook_max_bend", &A::hook_max_bend, 0.0, 1.0, "",
+            "a hook is straight: its halves turn by at most this fraction of the turn at the cut (0.2; at 1 a hook may bend as much as it turns)");
   return table;
 }
 }  // namespace

@@ -75,6 +75,10 @@ struct AnalyticParams {
   bool remove_hooks = true;
   double hook_max_length = 0.3;   // in
   double hook_min_length = 0.025; // in
+  // A hook is a straight flick: its outer and inner halves turn by at most
+  // this fraction of the turn at the cut (HookParams::max_bend_ratio), so a
+  // curve's own tight bend near an end (a flat ellipse's tip) is kept.
+  double hook_max_bend = 0.2;
 };
 
 std::vector<ParamSpec> parameter_specs();

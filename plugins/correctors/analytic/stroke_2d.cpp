@@ -27,6 +27,7 @@ Stroke2d make_stroke_2d(const Stroke& stroke, double dpi, const AnalyticParams& 
     HookParams hp;
     hp.max_length = p.hook_max_length * dpi;
     hp.min_length = std::min(p.hook_min_length * dpi, hp.max_length);
+    hp.max_bend_ratio = p.hook_max_bend;
     const IndexRange r = find_hookless_range(pts, hp);
     if (r.first > 0 || r.last + 1 < s.points.size()) {
       s.points = std::vector<Vec2>(s.points.begin() + static_cast<std::ptrdiff_t>(r.first),

@@ -55,6 +55,32 @@ TEST_CASE("hooks at both ends are removed", "[preprocess][hooks]") {
   }
 }
 
+TEST_CASE("a hook that bends is kept when hooks must be straight", "[preprocess][hooks]") {
+  // 100 points along +x; before them a 30 mm circular arc turning by 80°
+  // that arrives along +y and meets the body at a 90° turn: a hook for
+  // CASSIE's rule, but the piece bends as much as the turn at the cut.
+  std::vector<Vec3> p;
+  const double radius = 0.03 / (80.0 * std::numbers::pi / 180.0);
+  for (int i = 30; i > 0; --i) {
+    const double th = 0.001 * i / radius;  // back along the arc from the origin
+    p.push_back(Vec3(radius * (std::cos(th) - 1.0), -radius * std::sin(th), 0.0));
+  }
+  const std::size_t cut = p.size();
+  for (int i = 0; i < 100; ++i) p.push_back(Vec3(0.004 * i, 0.0, 0.0));
+  HookParams params;
+  REQUIRE(std::abs(static_cast<double>(find_hookless_range(p, params).first) - static_cast<double>(cut)) <= 1.0);
+  params.max_bend_ratio = 0.2;
+  CHECK(find_hookless_range(p, params).first == 0);
+  // A straight flick still qualifies: same cuts as without the test.
+  std::mt19937_64 rng(11);
+  for (double angle : {std::numbers::pi / 2, 2.5}) {
+    const Hooked h = hooked_stroke(0.05, 0.04, angle, rng);
+    const IndexRange r = find_hookless_range(h.points, params);
+    CHECK(std::abs(static_cast<double>(r.first) - static_cast<double>(h.start_corner)) <= 3.0);
+    CHECK(std::abs(static_cast<double>(r.last) - static_cast<double>(h.end_corner)) <= 3.0);
+  }
+}
+
 TEST_CASE("hook-free strokes are left intact", "[preprocess][hooks]") {
   std::mt19937_64 rng(9);
   const HookParams params;
@@ -87,6 +113,13 @@ TEST_CASE("find_hookless_range rejects bad input", "[preprocess][hooks]") {
   HookParams bad;
   bad.max_fraction = 0.7;
   REQUIRE_THROWS_AS(find_hookless_range({Vec3::Zero(), Vec3::UnitX()}, bad),
+                    std::invalid_argument);
+  HookParams bad_bend;
+  bad_bend.max_bend_ratio = -0.1;
+  REQUIRE_THROWS_AS(find_hookless_range({Vec3::Zero(), Vec3::UnitX()}, bad_bend),
+                    std::invalid_argument);
+  bad_bend.max_bend_ratio = NAN;
+  REQUIRE_THROWS_AS(find_hookless_range({Vec3::Zero(), Vec3::UnitX()}, bad_bend),
                     std::invalid_argument);
   const IndexRange two = find_hookless_range({Vec3::Zero(), Vec3::UnitX()}, params);
   REQUIRE(two == IndexRange{0, 1});

@@ -4,6 +4,7 @@
 // trigger is pressed or released. A hook shows as a C1 discontinuity (a sharp
 // turn) close to an end of the stroke; everything before it is cut.
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -31,6 +32,15 @@ struct HookParams {
   double min_length = 0.01;
   // Minimum turn (radians, in (0, π)) that counts as a C1 discontinuity.
   double min_angle = std::numbers::pi / 4;
+  // Optional straightness of the hook itself: the turn between the fitted
+  // directions of its outer and inner halves (split where it reaches a/2
+  // from the end) must be at most this fraction of the turn at the cut. A
+  // flick is straight; a tight smooth bend of the drawn curve (the end of a
+  // flat ellipse's projection) bends within the piece too. Only hooks whose
+  // halves are at least min_length long are tested (shorter ones are
+  // jitter-sized: their halves have no measurable direction). Infinity (the
+  // default, CASSIE's rule) disables the test.
+  double max_bend_ratio = std::numeric_limits<double>::infinity();
 };
 
 // Range of `points` (n >= 2) left after cutting a hook at each end.
@@ -42,9 +52,11 @@ struct HookParams {
 // distance >= a; the turn must also reach min_angle at half that scale (a/2
 // on both sides), so only turns concentrated at p_i (a corner, not a smooth
 // bend) qualify. The candidate with the largest turn >= min_angle is cut
-// (p_i is kept). The end is handled symmetrically on what remains. Returns
-// {0, n-1} when there is no hook. Throws std::invalid_argument for n < 2,
-// non-finite points or parameters out of range.
+// (p_i is kept); with a finite max_bend_ratio, candidates whose hook bends
+// more than that (see HookParams) are skipped. The end is handled
+// symmetrically on what remains. Returns {0, n-1} when there is no hook.
+// Throws std::invalid_argument for n < 2, non-finite points or parameters
+// out of range (max_bend_ratio must be >= 0).
 IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams& params);
 
 // The CASSIE app's rule (reference item 3, `InputStroke.GetG1sections`):

@@ -1,6 +1,7 @@
 // The 2D stroke the inference reads: hooks at the ends are cut before eq. 3
 // scores the endpoints; smooth bends are kept.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -55,4 +56,38 @@ TEST_CASE("a hook at a stroke's end is cut, a smooth bend is not", "[analytic][s
   const Stroke2d smooth = make_stroke_2d(pixel_stroke(arc), dpi, AnalyticParams{});
   CHECK_FALSE(smooth.hooks_cut);
   CHECK(smooth.points.size() == arc.size());
+}
+
+TEST_CASE("a curve's tight bend near its start is no hook", "[analytic][stroke2d]") {
+  // Half of a flat ellipse (120 x 20 px, as a circle seen at a grazing
+  // angle) drawn from 0.3 rad before its tip, sampled as the synthetic
+  // tablet pen moves: minimum jerk along the arclength, 500 px/s, 120 Hz.
+  // The tip turns by ~100° within ~15 px of the start, which CASSIE's hook
+  // rule cuts; its piece before the cut bends with it, so it is kept.
+  const int dense = 4000;
+  std::vector<Vec2> path;
+  std::vector<double> cum{0.0};
+  for (int k = 0; k <= dense; ++k) {
+    const double t = -0.3 + (std::numbers::pi + 0.3) * k / dense;
+    path.emplace_back(120.0 * std::cos(t), 20.0 * std::sin(t));
+    if (k > 0) cum.push_back(cum.back() + (path[k] - path[k - 1]).norm());
+  }
+  const int n = static_cast<int>(std::lround(cum.back() / 500.0 * 120.0)) + 1;
+  std::vector<Vec2> pts;
+  std::size_t j = 0;
+  for (int i = 0; i < n; ++i) {
+    const double u = static_cast<double>(i) / (n - 1);
+    const double s = cum.back() * u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
+    while (j + 1 < cum.size() - 1 && cum[j + 1] < s) ++j;
+    const double f = std::clamp((s - cum[j]) / (cum[j + 1] - cum[j]), 0.0, 1.0);
+    pts.push_back(path[j] + f * (path[j + 1] - path[j]));
+  }
+  const double dpi = 96.0;
+  const Stroke2d kept = make_stroke_2d(pixel_stroke(pts), dpi, AnalyticParams{});
+  CHECK_FALSE(kept.hooks_cut);
+  CHECK((kept.points.front() - pts.front()).norm() < 1e-12);
+  AnalyticParams any_bend;
+  any_bend.hook_max_bend = 1.0;
+  const Stroke2d cut = make_stroke_2d(pixel_stroke(pts), dpi, any_bend);
+  CHECK(cut.hooks_cut);
 }
