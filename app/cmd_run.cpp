@@ -155,15 +155,16 @@ void add_run_command(CLI::App& app, int& exit_code) {
 
     for (const auto& c : summary.cases)
       if (!c.ok)
-        std::cerr << "FAILED " << c.recording.stem().string() << " x " << c.variant.stack.name << ": "
-                  << c.error << "\n";
+        std::cerr << ("FAILED " + c.recording.stem().string() + " x " + c.variant.stack.name + ": " + c.error + "\n");
     std::cout << (summary.cases.size() - summary.failed()) << " of " << summary.cases.size()
               << " cases done";
     if (summary.failed()) std::cout << ", " << summary.failed() << " failed";
     std::cout << "; results in " << summary.run_dir.string() << "\n";
     if (config.outputs.report)
       std::cout << "report: " << (summary.run_dir / "report.html").string() << "\n";
-    for (const auto& l : lost) std::cerr << "LOST " << l << "\n";
+    // One write per line: under mpirun, stderr is forwarded write by write,
+    // so a line written in pieces could be split by the stdout lines above.
+    for (const auto& l : lost) std::cerr << ("LOST " + l + "\n");
     exit_code = summary.failed() || !lost.empty() ? 1 : 0;
 #ifdef SKETCHLAB_HAVE_MPI
     end_mpi_job(lost, exit_code);

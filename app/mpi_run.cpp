@@ -279,7 +279,7 @@ RunSummary coordinate(RunPlan plan, int size, const PluginHost& host, const RunO
     RankState& s = ranks[static_cast<std::size_t>(r)];
     s.state = RankState::gone;
     progress.finish();
-    std::cerr << "sketchlab: " << name(r) << ": " << why << "\n";
+    std::cerr << ("sketchlab: " + name(r) + ": " + why + "\n");  // one write (see cmd_run.cpp)
     lost.push_back(name(r) + ": " + why);
     for (std::size_t i : s.running) {
       CaseResult c;
@@ -319,7 +319,7 @@ RunSummary coordinate(RunPlan plan, int size, const PluginHost& host, const RunO
         case cannot_run: {
           const std::string why = receive_text(status);
           progress.finish();
-          std::cerr << "sketchlab: " << name(from) << ": cannot run cases: " << why << "\n";
+          std::cerr << ("sketchlab: " + name(from) + ": cannot run cases: " + why + "\n");
           lost.push_back(name(from) + ": cannot run cases: " + why);
           s.state = RankState::finished;  // it waits for the end of the run
           break;
