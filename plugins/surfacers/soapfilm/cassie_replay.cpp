@@ -411,7 +411,20 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
     const bool all_alive = std::all_of(p.strokes.begin(), p.strokes.end(), [&](std::int64_t s) { return alive.count(s); });
     if (const auto b = broken.find(p.id); b != broken.end()) {
       ++result.figures.cassie_broken;
-      if (const auto g = group_of(b->second); g && ours_removed_at.count({*g, p.strokes})) ++result.figures.matched_broken;
+      const auto g = group_of(b->second);
+      if (g && ours_removed_at.count({*g, p.strokes})) {
+        ++result.figures.matched_broken;
+      } else {
+        MissedBreak miss{p.strokes, g, false, ours_ever.count(p.strokes) > 0};
+        int alive_ours = 0;  // ours over these strokes alive when the group began
+        for (const ReplayEvent& e : result.events) {
+          if (!g || e.group >= *g) break;
+          alive_ours += static_cast<int>(std::count(e.added.begin(), e.added.end(), p.strokes)) -
+                        static_cast<int>(std::count(e.removed.begin(), e.removed.end(), p.strokes));
+        }
+        miss.ours_alive = alive_ours > 0;
+        result.missed_breaks.push_back(std::move(miss));
+      }
       continue;
     }
     if (!p.deleted_by_hand && all_alive && !p.strokes.empty()) cassie_final.insert(p.strokes);

@@ -125,12 +125,23 @@ struct TimingPair {
   bool ours_broken_before = false;
 };
 
+// One of CASSIE's breaks inferred from its log (cassie_breaks.hpp) at which
+// we did not remove a patch over the same strokes (ReplayFigures::
+// cassie_broken less matched_broken).
+struct MissedBreak {
+  StrokeSet strokes;
+  std::optional<std::size_t> group;  // the group of CASSIE's break
+  bool ours_alive = false;  // a patch of ours over these strokes was alive when that group began
+  bool ours_ever = false;   // we made one over these strokes at some event
+};
+
 struct ReplayResult {
   std::vector<ReplayEvent> events;  // in replay order
   ReplayFigures figures;
   std::vector<AstrayMiss> astray;  // figures.causes.miss_not_found of them
   std::vector<ExtraPatch> extras;  // figures.causes.extra_other of them
   std::vector<TimingPair> timing;  // the cycles made at another event, both ways
+  std::vector<MissedBreak> missed_breaks;  // figures.cassie_broken - figures.matched_broken of them
   std::vector<std::string> warnings;  // the session loader's and the replay's
   Network network;  // the replay's network at the end
 };

@@ -1,5 +1,5 @@
 // soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
-//                  [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing]
+//                  [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -21,7 +21,9 @@
 // walks leave it (replay_causes.hpp, Departure); --extras lists every
 // patch of ours CASSIE never made ("other" extras: cassie_replay.hpp,
 // ExtraPatch) and counts their traits; --timing lists every cycle CASSIE
-// made at one event and we at another (cassie_replay.hpp, TimingPair).
+// made at one event and we at another (cassie_replay.hpp, TimingPair);
+// --breaks lists every break CASSIE's log shows (cassie_breaks.hpp) that we
+// did not make at its event (cassie_replay.hpp, MissedBreak).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -63,9 +65,23 @@ struct Row {
   std::vector<AstrayMiss> astray;
   std::vector<ExtraPatch> extras;
   std::vector<TimingPair> timing;
-  std::map<std::size_t, std::string> event_name;  // group -> "kind stroke" of its event, for --timing
+  std::vector<MissedBreak> missed_breaks;
+  std::map<std::size_t, std::string> event_name;  // group -> "kind stroke" of its event, for the lists
   int events = 0;
 };
+
+// "group (kind stroke)" of a replay group, "–" for none.
+std::string event_label(const Row& r, const std::optional<std::size_t>& g) {
+  if (!g) return "–";
+  const auto e = r.event_name.find(*g);
+  return std::to_string(*g) + (e == r.event_name.end() ? "" : " (" + e->second + ")");
+}
+
+std::string stroke_list(const StrokeSet& strokes) {
+  std::string out;
+  for (std::int64_t s : strokes) out += (out.empty() ? "" : " ") + std::to_string(s);
+  return out;
+}
 
 const char* departure_name(Departure d) {
   switch (d) {
@@ -90,7 +106,7 @@ int main(int argc, char** argv) {
   std::map<std::string, ParamValue> given;
   ReplayOptions options;
   std::string events_csv;
-  bool list_astray = false, list_extras = false, list_timing = false;
+  bool list_astray = false, list_extras = false, list_timing = false, list_breaks = false;
   const std::vector<ParamSpec> specs = soapfilm_param_specs();
   bool dir_given = false;
   try {
@@ -114,9 +130,11 @@ int main(int argc, char** argv) {
         list_extras = true;
       } else if (a == "--timing") {
         list_timing = true;
+      } else if (a == "--breaks") {
+        list_breaks = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing]\n";
+                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
@@ -171,6 +189,7 @@ int main(int argc, char** argv) {
       row.astray = r.astray;
       row.extras = r.extras;
       row.timing = r.timing;
+      row.missed_breaks = r.missed_breaks;
       for (const ReplayEvent& e : r.events)
         if (e.kind == "stroke" || e.kind == "delete") row.event_name.emplace(e.group, e.kind + ' ' + std::to_string(e.element));
       row.events = static_cast<int>(r.events.size());
@@ -288,8 +307,7 @@ int main(int argc, char** argv) {
               << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows)
       for (const AstrayMiss& m : r.astray) {
-        std::string strokes;
-        for (std::int64_t s : m.strokes) strokes += (strokes.empty() ? "" : " ") + std::to_string(s);
+        const std::string strokes = stroke_list(m.strokes);
         char pos[96];
         std::snprintf(pos, sizeof pos, "%.3f %.3f %.3f", m.at.position.x(), m.at.position.y(), m.at.position.z());
         char figs[64];
@@ -351,14 +369,9 @@ int main(int argc, char** argv) {
     std::map<std::string, int> traits;
     for (const Row& r : rows) {
       if (r.system != 2) continue;
-      auto event = [&](const std::optional<std::size_t>& g) {
-        if (!g) return std::string("–");
-        const auto e = r.event_name.find(*g);
-        return std::to_string(*g) + (e == r.event_name.end() ? "" : " (" + e->second + ")");
-      };
+      auto event = [&](const std::optional<std::size_t>& g) { return event_label(r, g); };
       for (const TimingPair& p : r.timing) {
-        std::string strokes;
-        for (std::int64_t s : p.strokes) strokes += (strokes.empty() ? "" : " ") + std::to_string(s);
+        const std::string strokes = stroke_list(p.strokes);
         const long gap = p.cassie && p.ours ? long(*p.ours) - long(*p.cassie) : 0;
         std::cout << "| " << r.session << " | " << strokes << " | " << event(p.ours) << " | " << event(p.cassie)
                   << " | " << (p.cassie && p.ours ? std::to_string(gap) : std::string("–")) << " | " << p.youngest
@@ -385,6 +398,25 @@ int main(int argc, char** argv) {
       }
     }
     std::cout << "\n| made at another event, Patch sessions | count |\n|---|---|\n";
+    for (const auto& [trait, n] : traits) std::cout << "| " << trait << " | " << n << " |\n";
+    std::cout << "\n";
+  }
+
+  if (list_breaks) {
+    // CASSIE's inferred breaks we did not make at their event
+    // (cassie_replay.hpp, MissedBreak), then how many share each trait.
+    std::cout << "| session | strokes | CASSIE's break at | ours alive then | ours ever made |\n|---|---|---|---|---|\n";
+    std::map<std::string, int> traits;
+    for (const Row& r : rows)
+      for (const MissedBreak& m : r.missed_breaks) {
+        std::cout << "| " << r.session << " | " << stroke_list(m.strokes) << " | " << event_label(r, m.group) << " | "
+                  << m.ours_alive << " | " << m.ours_ever << " |\n";
+        ++traits["missed"];
+        traits["ours alive then, not removed there"] += m.ours_alive;
+        traits["ours not alive then, made at another event"] += !m.ours_alive && m.ours_ever;
+        traits["ours never made"] += !m.ours_ever;
+      }
+    std::cout << "\n| CASSIE's breaks we did not make, Patch sessions | count |\n|---|---|\n";
     for (const auto& [trait, n] : traits) std::cout << "| " << trait << " | " << n << " |\n";
     std::cout << "\n";
   }
