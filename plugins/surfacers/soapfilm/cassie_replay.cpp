@@ -75,10 +75,9 @@ std::optional<Vec3> point_on(const Patch& p) {
   return (p.mesh.vertices[f[0]] + p.mesh.vertices[f[1]] + p.mesh.vertices[f[2]]) / 3.0;
 }
 
-// `base` completed with what the cycle is on our graph (ExtraPatch).
-ExtraPatch describe(const Network& net, const Patch& p, const CycleSearchParams& params, ExtraPatch base) {
-  CurveGraph graph(net);
-  CycleSearcher searcher(graph, params);
+// `base` completed with what the cycle is on our graph (ExtraPatch);
+// `graph` and `searcher` are over the network the patch was made on.
+ExtraPatch describe(CurveGraph& graph, CycleSearcher& searcher, const Patch& p, ExtraPatch base) {
   std::map<NodeId, int> ends;  // segment ends of the cycle at each node
   for (int s : boundary_key(graph, p.boundary)) {
     ++base.pieces;
@@ -355,6 +354,8 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       it = ours.erase(it);
     }
     const PatchId first_new = ours.empty() ? 0 : ours.rbegin()->first + 1;
+    std::optional<CurveGraph> graph;  // built once, if this step made an automatic patch
+    std::optional<CycleSearcher> searcher;
     for (auto it = net.patches().lower_bound(first_new); it != net.patches().end(); ++it) {
       if (ours.count(it->first)) continue;
       const StrokeSet strokes = strokes_of(curves, it->second);
@@ -363,8 +364,9 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
       if (it->second.automatic) {
         ev.added.push_back(strokes);
         ++ours_at[{ev.group, strokes}];
+        if (!graph) searcher.emplace(graph.emplace(net), params.search);
         ExtraPatch& x = made[it->first] =
-            describe(net, it->second, params.search, {ev.group, st.time, st.kind, ev.element, strokes});
+            describe(*graph, *searcher, it->second, {ev.group, st.time, st.kind, ev.element, strokes});
         x.broken_here = static_cast<int>(ev.removed.size());
       } else if (st.kind == "add_patch") {
         of_cassie[ev.element] = it->first;

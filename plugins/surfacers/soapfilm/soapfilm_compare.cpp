@@ -25,12 +25,12 @@
 // --breaks lists every break CASSIE's log shows (cassie_breaks.hpp) that we
 // did not make at its event (cassie_replay.hpp, MissedBreak).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <numbers>
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -324,11 +324,6 @@ int main(int argc, char** argv) {
   if (list_extras) {
     // One row per patch of ours CASSIE never made (cassie_replay.hpp,
     // ExtraPatch), then how many share each trait.
-    auto joined = [](const StrokeSet& s) {
-      std::string out;
-      for (std::int64_t id : s) out += (out.empty() ? "" : " ") + std::to_string(id);
-      return out;
-    };
     std::cout << "| session | event | time (s) | made by | strokes | segments | sharp nodes | nodes passed twice "
                  "| most segments at a node | ours removed there | CASSIE's made there | we removed it at |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -338,9 +333,9 @@ int main(int argc, char** argv) {
       if (r.system != 2) continue;
       for (const ExtraPatch& x : r.extras) {
         std::string here;
-        for (const StrokeSet& s : x.cassie_here) here += (here.empty() ? "" : "; ") + joined(s);
+        for (const StrokeSet& s : x.cassie_here) here += (here.empty() ? "" : "; ") + stroke_list(s);
         std::cout << "| " << r.session << " | " << x.group << " | " << x.time << " | " << x.kind << ' ' << x.element
-                  << " | " << joined(x.strokes) << " | " << x.pieces << " | " << x.sharp_nodes << " | " << x.revisited
+                  << " | " << stroke_list(x.strokes) << " | " << x.pieces << " | " << x.sharp_nodes << " | " << x.revisited
                   << " | " << x.max_degree << " | " << x.broken_here << " | " << here << " | "
                   << (x.removed_at ? std::to_string(*x.removed_at) : std::string("–")) << " |\n";
         ++listed;
