@@ -89,7 +89,7 @@ const NodeFrame& CycleSearcher::frame(NodeId node) {
   return frames_.emplace(node, fit_node_frame(tangents, opposite, params_.frame)).first->second;
 }
 
-std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival) {
+std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival, const HalfEdge* forced) {
   const NodeId b = graph_->to(in);
   const std::vector<HalfEdge> outs = graph_->outgoing(b);
   if (outs.size() < 2) return std::nullopt;  // a dangling end (item 24)
@@ -100,11 +100,16 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
   if (arrival) *arrival = transported;
   std::vector<HalfEdge> cands;
   std::vector<Leaving> dirs;
+  int forced_at = -1;
   for (const HalfEdge& h : outs)
     if (!(h == in.reversed())) {
+      if (forced && h == *forced) forced_at = static_cast<int>(cands.size());
       cands.push_back(h);
       dirs.push_back(leaving(h));
     }
+  if (forced && forced_at < 0) return std::nullopt;
+  // The walk's own choice, or the forced one.
+  const auto choose = [&](int pick) { return forced ? forced_at : pick; };
   const Leaving incoming = leaving(in.reversed());
   const NodeFrame& f = frame(b);
   if (params_.transport_through_two && outs.size() == 2) {
@@ -113,8 +118,9 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
     // collinear tangents it is the curves' binormal, across the surface).
     // The transported normal is carried across it. Not the app's rule
     // (README.md: measured).
-    normal = Eigen::Quaterniond::FromTwoVectors(-incoming.tangent, dirs[0].tangent) * transported;
-    return cands[0];
+    const std::size_t chosen = static_cast<std::size_t>(choose(0));
+    normal = Eigen::Quaterniond::FromTwoVectors(-incoming.tangent, dirs[chosen].tangent) * transported;
+    return cands[chosen];
   }
   if (!f.defined || f.sharp) {
     // Sharp node (§3.3.2.2, Fig. 3.16; item 24): sort around the transported
@@ -133,8 +139,8 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
     std::vector<Leaving> kept_dirs;
     for (std::size_t i : kept) kept_dirs.push_back(dirs[i]);
     const int pick = next_clockwise(transported, incoming, kept_dirs, params_.tie_cos);
-    if (pick < 0) return std::nullopt;
-    const std::size_t chosen = kept[static_cast<std::size_t>(pick)];
+    if (pick < 0 && !forced) return std::nullopt;
+    const std::size_t chosen = forced ? static_cast<std::size_t>(forced_at) : kept[static_cast<std::size_t>(pick)];
     normal = Eigen::Quaterniond::FromTwoVectors(-incoming.tangent, dirs[chosen].tangent) * transported;
     return cands[chosen];
   }
@@ -155,7 +161,7 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
     };
     std::vector<Leaving> planar;
     for (const Leaving& l : dirs) planar.push_back(in_plane(l));
-    const int pick = next_clockwise(transported, in_plane(incoming), planar, params_.tie_cos);
+    const int pick = choose(next_clockwise(transported, in_plane(incoming), planar, params_.tie_cos));
     if (pick < 0) return std::nullopt;
     // The node normal is oriented the way its own clockwise order makes the
     // same turn; when both ways do (or neither), it says nothing and the
@@ -165,7 +171,7 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
     normal = plus == minus ? transported : plus ? f.normal : Vec3(-f.normal);
     return cands[static_cast<std::size_t>(pick)];
   }
-  const int pick = next_clockwise(normal, incoming, dirs, params_.tie_cos);
+  const int pick = choose(next_clockwise(normal, incoming, dirs, params_.tie_cos));
   if (pick < 0) return std::nullopt;
   return cands[static_cast<std::size_t>(pick)];
 }
@@ -239,6 +245,22 @@ std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<WalkTr
     if (traces) traces->push_back(trace);
   }
   return out;
+}
+
+std::vector<Vec3> CycleSearcher::carried(const Cycle& cycle, const Vec3& start_normal) {
+  std::vector<Vec3> out;
+  Vec3 normal = start_normal;
+  for (std::size_t i = 0; i < cycle.size(); ++i) {
+    const HalfEdge& next = cycle[(i + 1) % cycle.size()];
+    Vec3 arrival = Vec3::Zero();
+    if (graph_->to(cycle[i]) != graph_->from(next) || !turn(cycle[i], normal, &arrival, &next)) return {};
+    out.push_back(arrival);
+  }
+  return out;
+}
+
+bool CycleSearcher::between(HalfEdge in, HalfEdge out, HalfEdge h, const Vec3& normal) const {
+  return next_clockwise(normal, leaving(in.reversed()), {leaving(out), leaving(h)}, params_.tie_cos) == 1;
 }
 
 }  // namespace sketchlab::soapfilm

@@ -40,6 +40,12 @@ struct CycleSearchParams {
   // nodes into it and reaches the cycle again through at most this many
   // two-segment nodes.
   int break_reach = 5;
+  // Item 25: "into it" read from the node's sorted neighbour order (the new
+  // segment sits between the cycle's two consecutive segments there, on the
+  // side the cycle turns through); unset (the default), from the patch's
+  // mesh (the fan of triangles at that point), which agrees better with
+  // CASSIE's patches (README.md: measured, eleventh round).
+  bool break_by_order = false;
   // Item 24: a walk stops at a segment already bounding two patches; with
   // this unset only automatic patches count (thesis §3.3.2.2 read literally).
   bool manual_patches_count = true;
@@ -97,17 +103,34 @@ class CycleSearcher {
   // `traces`, when given, receives the trace of each walk (see walk()).
   std::vector<Cycle> search_segment(int segment, std::vector<WalkTrace>* traces = nullptr);
 
+  // The normals the walk carries round `cycle` (a closed chain of
+  // half-edges) from `normal` at from(cycle[0]), each turn forced onto the
+  // cycle's next half-edge: element i is the unit normal carried to
+  // to(cycle[i]) (item 25 needs the cycle's orientation at its nodes).
+  // Empty when a step is not a turn of this graph.
+  std::vector<Vec3> carried(const Cycle& cycle, const Vec3& normal);
+
+  // Whether `h`, leaving to(in), comes strictly before `out` in clockwise
+  // order around `normal` from the arriving segment (item 23's order, tie
+  // rule included): between the cycle segments `in` and `out` on the side
+  // the cycle turns through.
+  bool between(HalfEdge in, HalfEdge out, HalfEdge h, const Vec3& normal) const;
+
   int walks() const { return walks_; }
+
+  // Whether a closed walk runs clockwise around the mean of the normals it
+  // used (`normal_sum`, one unit normal per node): the outer border. False
+  // when those normals disagree (|normal_sum| < half the node count).
+  bool winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) const;
 
  private:
   Leaving leaving(HalfEdge h) const;
   // Next half-edge at to(in) given the oriented normal carried along `in`.
   // Updates `normal` to the oriented normal leaving the node; `arrival`,
   // when given, receives the normal carried to the node.
-  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr);
-  // Whether a closed walk runs clockwise around the mean of the normals it
-  // used (`normal_sum`, one unit normal per node): the outer border.
-  bool winds_clockwise(const Cycle& cycle, const Vec3& normal_sum) const;
+  // With `forced` (a half-edge leaving that node) the turn takes it instead
+  // of its own choice and carries the normal accordingly.
+  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr, const HalfEdge* forced = nullptr);
 
   CurveGraph* graph_;
   CycleSearchParams params_;

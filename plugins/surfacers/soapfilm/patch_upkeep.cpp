@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include "patch_break.hpp"
+
 namespace sketchlab::soapfilm {
 namespace {
 
@@ -101,70 +103,7 @@ class CycleFilter {
   std::map<int, int> bounding_;  // segment -> patches it bounds
 };
 
-// Item 25: from `h` (leaving the cycle), the cycle is reached again through
-// at most `reach` two-segment nodes.
-bool reaches(CurveGraph& graph, HalfEdge h, const std::set<NodeId>& cycle_nodes, int reach) {
-  for (int passed = 0;; ++passed) {
-    const NodeId y = graph.to(h);
-    if (cycle_nodes.count(y)) return true;
-    const std::vector<HalfEdge> outs = graph.outgoing(y);
-    if (outs.size() != 2 || passed >= reach) return false;
-    h = outs[0] == h.reversed() ? outs[1] : outs[0];
-  }
-}
-
-// Item 25: whether a new segment crosses the patch.
-bool broken_by(CurveGraph& graph, const Patch& patch, const std::vector<int>& key, const std::set<int>& fresh,
-               int reach) {
-  std::set<NodeId> cycle_nodes;
-  for (int s : key) {
-    cycle_nodes.insert(graph.segment(s).node0);
-    cycle_nodes.insert(graph.segment(s).node1);
-  }
-  for (NodeId x : cycle_nodes)
-    for (const HalfEdge& h : graph.outgoing(x)) {
-      if (!fresh.count(h.segment) || std::binary_search(key.begin(), key.end(), h.segment)) continue;
-      const Node* node = graph.network().find_node(x);
-      if (enters_patch(patch.mesh, node->position, graph.direction(h)) && reaches(graph, h, cycle_nodes, reach))
-        return true;
-    }
-  return false;
-}
-
 }  // namespace
-
-bool enters_patch(const Mesh& mesh, const Vec3& at, const Vec3& d) {
-  if (mesh.faces.empty() || mesh.vertices.empty()) return true;
-  int v = 0;
-  double best = INFINITY;
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    if (const double dist = (mesh.vertices[i] - at).squaredNorm(); dist < best) best = dist, v = static_cast<int>(i);
-  // The corners of the triangles at v, seen along their mean normal (one
-  // plane for the whole fan: the fan's triangles fold, and d projected on
-  // each one's own plane could fall between two of them).
-  const Vec3& o = mesh.vertices[static_cast<std::size_t>(v)];
-  std::vector<std::pair<Vec3, Vec3>> corners;
-  Vec3 normal = Vec3::Zero();
-  for (const auto& f : mesh.faces)
-    for (std::size_t k = 0; k < 3; ++k)
-      if (f[k] == v) {
-        const Vec3 e1 = mesh.vertices[static_cast<std::size_t>(f[(k + 1) % 3])] - o;
-        const Vec3 e2 = mesh.vertices[static_cast<std::size_t>(f[(k + 2) % 3])] - o;
-        if (const Vec3 n = e1.cross(e2); n.norm() > 1e-15) {
-          normal += n.normalized();
-          corners.emplace_back(e1, e2);
-        }
-      }
-  if (!(normal.norm() > 1e-9)) return false;
-  const Vec3 n = normal.normalized();
-  const Vec3 p = d - d.dot(n) * n;
-  if (p.norm() < 1e-6 * d.norm()) return false;
-  for (const auto& [e1, e2] : corners) {
-    const Vec3 a = e1 - e1.dot(n) * n, b = e2 - e2.dot(n) * n;
-    if (a.cross(p).dot(n) >= 0.0 && p.cross(b).dot(n) >= 0.0) return true;
-  }
-  return false;
-}
 
 std::vector<int> boundary_key(CurveGraph& graph, const std::vector<OrientedSegment>& boundary) {
   std::vector<int> key;
@@ -219,7 +158,7 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
     const bool on_replaced = std::any_of(patch.boundary.begin(), patch.boundary.end(),
                                          [&](const OrientedSegment& p) { return replaced.count(p.curve); });
     const std::vector<int> key = boundary_key(graph, patch.boundary);
-    if (!on_replaced && !key.empty() && !broken_by(graph, patch, key, fresh, params.break_reach)) continue;
+    if (!on_replaced && !key.empty() && !broken_by(graph, searcher, patch, key, fresh, params)) continue;
     // Found again over the same pieces of curve, it keeps its identity
     // (item 25), also where this edit's nodes split a piece: CASSIE logs no
     // new patch for such a cycle (0 of the 26 the former rule remade at a

@@ -5,11 +5,9 @@
 //  - new segments: the graph segments of added or replaced curves (and those
 //    at an added node that is on no new curve);
 //  - patches possibly broken: those on a replaced curve (stale geometry), and
-//    those whose cycle passes through a node of a new segment. A patch breaks
-//    when a new segment leaves such a node into the patch (between the two
-//    cycle segments there, on the patch's side: read from its mesh) and
-//    reaches the cycle again through at most `break_reach` two-segment nodes.
-//    It is removed and one of its segments searched again, first;
+//    those whose cycle passes through a node of a new segment and that a new
+//    segment breaks (item 25, patch_break.hpp). A broken patch is removed
+//    and one of its segments searched again, first;
 //  - deletions: the kernel removes patches bounded by a deleted curve; the
 //    segments left of those patches (broken cycles' seeds, searched first,
 //    item 25) and the segments at the nodes the deleted curve touched (both
@@ -57,11 +55,5 @@ std::vector<std::vector<OrientedSegment>> detect_all_cycles(const Network& netwo
 // The graph segments (sorted, as indices into `graph`) a patch boundary
 // covers; empty when a piece no longer matches the graph.
 std::vector<int> boundary_key(CurveGraph& graph, const std::vector<OrientedSegment>& boundary);
-
-// Whether direction `d` leaving the boundary point `at` of a patch points
-// into it: inside the corner, at the mesh vertex nearest `at`, of one of the
-// triangles there (their union is the patch's side at that point). True for
-// a patch without a mesh.
-bool enters_patch(const Mesh& mesh, const Vec3& at, const Vec3& d);
 
 }  // namespace sketchlab::soapfilm

@@ -41,6 +41,10 @@ const ParamTable<SoapfilmParams>& parameters() {
           .integer("break_reach", nested_field(&P::search, &CycleSearchParams::break_reach), 0.0, 1000.0, "",
                    "a new segment entering a patch breaks it if it reaches the cycle again through at most this many "
                    "two-segment nodes (CASSIE app: 5)")
+          .boolean("break_by_order", nested_field(&P::search, &CycleSearchParams::break_by_order),
+                   "a new segment enters a patch when it sits between two consecutive cycle segments in the node's "
+                   "order around its normal oriented by the cycle (CASSIE app, item 25); off: when it leaves into "
+                   "the patch's mesh")
           .boolean("seed_split_segments", nested_field(&P::search, &CycleSearchParams::seed_split_segments),
                    "also search an old curve's segments split by a node the edit added on it (CASSIE app, item 25)")
           .boolean("manual_patches_count", nested_field(&P::search, &CycleSearchParams::manual_patches_count),
