@@ -94,6 +94,11 @@ const ParamTable<Settings>& parameters() {
                                                                     {"thesis", FidelityNorm::thesis}},
                   "E_fidelity normalisation: cassie_app (item 13: positions over (2δ)², halves) or thesis "
                 "(eq. 3.2: positions over the stroke span L²)")
+          .choice("connectivity", c(&C::connectivity),
+                  std::vector<std::pair<std::string, ConnectivityTotal>>{{"cassie_app", ConnectivityTotal::cassie_app},
+                                                                         {"thesis", ConnectivityTotal::thesis}},
+                  "E_connectivity's total weight: cassie_app (item 13: constraints that got an anchor) or thesis "
+                "(eq. 3.12: every detected constraint)")
           .real("tangent_weight", c(&C::tangent_weight), 0.0, 1e6, "",
                 "E_tangent = w/|e₀|²·|T×e|² on the edge at an aligned constraint (item 14: 2)")
           .real("planarity_weight", c(&C::planarity_weight), 0.0, 1e6, "",

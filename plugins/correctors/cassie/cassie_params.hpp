@@ -33,6 +33,12 @@ enum class FidelityNorm {
   thesis,      // thesis eq. 3.2: 1/(N·L²)·Σ|d|² + 1/(N−1)·Σ|Δd|²/|e₀|²
 };
 
+// What E_connectivity's weights are divided by.
+enum class ConnectivityTotal {
+  cassie_app,  // item 13: the constraints that got an anchor
+  thesis,      // thesis eq. 3.12: every detected constraint
+};
+
 struct CassieParams {
   double delta = 0.02;                   // m, δ at zoom 1 (thesis §3.2.3.1)
   double angle = std::numbers::pi / 6;   // rad, θ (thesis §3.2.3.1)
@@ -57,6 +63,7 @@ struct CassieParams {
   NodeAlignment node_alignment = NodeAlignment::opposite;
   double lambda = 0.6;                   // fidelity vs connectivity (CHI eq. 2)
   FidelityNorm fidelity = FidelityNorm::cassie_app;
+  ConnectivityTotal connectivity = ConnectivityTotal::cassie_app;
   double tangent_weight = 2.0;           // E_tangent = w/|e₀|²·|T×e|² (item 14: 2)
   double planarity_weight = 1.0;         // E_planar multiplier (item 14: 1)
   bool planarity = true;
