@@ -334,7 +334,7 @@ std::vector<std::size_t> find_corners_by_turns(const std::vector<Vec3>& points, 
                                                std::size_t min_samples, double min_length) {
   check_points(points, "find_corners_by_turns");
   const std::size_t n = points.size();
-  const std::vector<double> turn = sample_turns(points);
+  const std::vector<double> turn = sample_turns(points, TurnSpan::across);
   const std::vector<double> cum = cumulative_length(points);
   auto ok = [&](std::size_t a, std::size_t b) { return b - a + 1 >= min_samples && cum[b] - cum[a] > min_length; };
   std::vector<std::size_t> corners;

@@ -125,7 +125,7 @@ IndexRange find_hookless_range_by_turns(const std::vector<Vec3>& points, const T
         "find_hookless_range_by_turns: need max_length > 0 (finite), max_fraction in [0, 0.5), "
         "min_angle in (0, π)");
   }
-  const std::vector<double> turn = sample_turns(points);
+  const std::vector<double> turn = sample_turns(points, params.span);
   const double limit = std::min(params.max_length, params.max_fraction * polyline_length(points));
   IndexRange r{0, n - 1};
   double scanned = 0.0;

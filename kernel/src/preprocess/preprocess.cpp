@@ -54,6 +54,7 @@ Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<d
     hp.max_length = params.hook_max_length_factor * d;
     hp.max_fraction = params.hook_max_fraction;
     hp.min_angle = params.app_hook_angle;
+    hp.span = params.app_hook_turn;
     r = find_hookless_range_by_turns(pts, hp);
     out.hook_cut = {r.first > 0, r.last + 1 < pts.size()};
   }

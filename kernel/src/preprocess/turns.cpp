@@ -4,7 +4,7 @@
 
 namespace sketchlab {
 
-std::vector<double> sample_turns(const std::vector<Vec3>& p) {
+std::vector<double> sample_turns(const std::vector<Vec3>& p, TurnSpan span) {
   const std::size_t n = p.size();
   std::vector<double> turn(n, 0.0);
   if (n < 3) return turn;
@@ -14,7 +14,7 @@ std::vector<double> sample_turns(const std::vector<Vec3>& p) {
     return p[b] - p[a];
   };
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    const Vec3 a = direction(i - 1), b = direction(i + 1);
+    const Vec3 a = direction(i - 1), b = direction(span == TurnSpan::across ? i + 1 : i);
     if (a.norm() == 0.0 || b.norm() == 0.0) continue;
     turn[i] = std::atan2(a.cross(b).norm(), a.dot(b));
   }

@@ -82,6 +82,11 @@ const ParamTable<Settings>& parameters() {
                 "connectivity weight of an existing intersection (CHI eq. 3: 2)")
           .real("tangent_bonus", c(&C::tangent_bonus), 0.0, 100.0, "",
                 "added to the weight of a constraint whose tangents align (item 11: 0.5)")
+          .choice("node_alignment", c(&C::node_alignment),
+                  std::vector<std::pair<std::string, NodeAlignment>>{{"opposite", NodeAlignment::opposite},
+                                                                     {"same", NodeAlignment::same}},
+                  "at an existing node the tangents align when the two curves' parametric tangents point "
+                "opposite ways (item 11 as CASSIE's logs show it) or the same way")
           .real("lambda", c(&C::lambda), 0.0, 1.0, "",
                 "fidelity weight λ in E = λ·E_fidelity + (1−λ)·E_connectivity (CHI §4.3: 0.6)")
           .choice("fidelity", c(&C::fidelity),
@@ -89,6 +94,11 @@ const ParamTable<Settings>& parameters() {
                                                                     {"thesis", FidelityNorm::thesis}},
                   "E_fidelity normalisation: cassie_app (item 13: positions over (2δ)², halves) or thesis "
                 "(eq. 3.2: positions over the stroke span L²)")
+          .choice("connectivity", c(&C::connectivity),
+                  std::vector<std::pair<std::string, ConnectivityTotal>>{{"cassie_app", ConnectivityTotal::cassie_app},
+                                                                         {"thesis", ConnectivityTotal::thesis}},
+                  "E_connectivity's total weight: cassie_app (item 13: constraints that got an anchor) or thesis "
+                "(eq. 3.12: every detected constraint)")
           .real("tangent_weight", c(&C::tangent_weight), 0.0, 1e6, "",
                 "E_tangent = w/|e₀|²·|T×e|² on the edge at an aligned constraint (item 14: 2)")
           .real("planarity_weight", c(&C::planarity_weight), 0.0, 1e6, "",
@@ -146,6 +156,11 @@ const ParamTable<Settings>& parameters() {
                    "fit straight strokes with a line (item 2)")
           .boolean("remove_hooks", pre(&PreprocessParams::remove_hooks),
                    "cut hooks at both ends of the stroke (item 3)")
+          .choice("hook_turn", pre(&PreprocessParams::app_hook_turn),
+                  std::vector<std::pair<std::string, TurnSpan>>{{"consecutive", TurnSpan::consecutive},
+                                                                {"across", TurnSpan::across}},
+                  "item 3's turn of the averaged direction: from one sample to the next, or across the "
+                "sample (between its neighbours' directions; cassie_app preprocessing)")
           .check([](Settings& s) { s.params.preprocess.delta = s.params.delta; });
   return table;
 }

@@ -20,10 +20,23 @@ enum class MirrorMode {
   off,        // ignore the mirror plane
 };
 
+// When a constraint at an existing node aligns the tangents (item 11: "at a
+// node where tangents point the same way").
+enum class NodeAlignment {
+  opposite,  // the curves' parametric tangents point opposite ways (CASSIE's logs, see README)
+  same,      // they point the same way
+};
+
 // Normalisation of E_fidelity.
 enum class FidelityNorm {
   cassie_app,  // item 13: 0.5/N·Σ|d|²/(2δ)² + 0.5/(N−1)·Σ|Δd|²/|e₀|²
   thesis,      // thesis eq. 3.2: 1/(N·L²)·Σ|d|² + 1/(N−1)·Σ|Δd|²/|e₀|²
+};
+
+// What E_connectivity's weights are divided by.
+enum class ConnectivityTotal {
+  cassie_app,  // item 13: the constraints that got an anchor
+  thesis,      // thesis eq. 3.12: every detected constraint
 };
 
 struct CassieParams {
@@ -47,8 +60,10 @@ struct CassieParams {
   double weight_curve = 1.5;
   double weight_node = 2.0;
   double tangent_bonus = 0.5;            // added to the weight of an aligned constraint
+  NodeAlignment node_alignment = NodeAlignment::opposite;
   double lambda = 0.6;                   // fidelity vs connectivity (CHI eq. 2)
   FidelityNorm fidelity = FidelityNorm::cassie_app;
+  ConnectivityTotal connectivity = ConnectivityTotal::cassie_app;
   double tangent_weight = 2.0;           // E_tangent = w/|e₀|²·|T×e|² (item 14: 2)
   double planarity_weight = 1.0;         // E_planar multiplier (item 14: 1)
   bool planarity = true;

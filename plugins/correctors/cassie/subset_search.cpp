@@ -10,10 +10,10 @@
 namespace sketchlab::cassie {
 
 double connectivity_energy(const std::vector<Candidate>& cands, const Binding& b,
-                           const std::vector<int>& subset) {
+                           const std::vector<int>& subset, bool over_detected) {
   double all = 0.0, on = 0.0;
   for (std::size_t i = 0; i < cands.size(); ++i)
-    if (b.anchor[i] >= 0) all += cands[i].weight;
+    if (over_detected || b.anchor[i] >= 0) all += cands[i].weight;
   for (int i : subset) on += cands[i].weight;
   const double ratio = all > 0 ? on / all : 0.0;
   return std::exp(-ratio * ratio);
@@ -57,7 +57,7 @@ SubsetResult evaluate_subset(const Binding& b, const std::vector<Candidate>& can
   r.solve = solve_constrained(pr);
   if (!r.solve.ok) return r;
   r.feasible = true;
-  r.connectivity = connectivity_energy(cands, b, subset);
+  r.connectivity = connectivity_energy(cands, b, subset, st.connectivity_over_detected);
   r.energy = st.lambda * r.solve.fidelity + (1.0 - st.lambda) * r.connectivity;
   return r;
 }

@@ -14,6 +14,9 @@ namespace sketchlab::cassie {
 struct SearchSettings {
   double lambda = 0.6;
   FidelityScale fidelity;
+  // E_connectivity's total: the constraints that got an anchor (item 13) or
+  // every detected one (thesis eq. 3.12).
+  bool connectivity_over_detected = false;
   double tangent_weight = 2.0;        // E_tangent multiplier (item 14)
   double planarity_weight = 1.0;      // E_planar multiplier; 0 disables planarity
   double planar_distance = 0.04;      // m: planar when every control point is this close (2δ)
@@ -35,10 +38,11 @@ struct SubsetResult {
   double energy = 0.0;        // CHI eq. 2
 };
 
-// E_connectivity = exp(−(Σ_subset w / Σ_bound w)²) (CHI eq. 3; item 13:
-// over the constraints that got an anchor only).
+// E_connectivity = exp(−(Σ_subset w / Σ_total w)²) (CHI eq. 3), the total
+// over the constraints that got an anchor (item 13) or, with
+// `over_detected`, over every detected one (thesis eq. 3.12).
 double connectivity_energy(const std::vector<Candidate>& constraints, const Binding& binding,
-                           const std::vector<int>& subset);
+                           const std::vector<int>& subset, bool over_detected);
 
 // Solves one subset on the bound curve: point targets at the anchors,
 // tangent targets of aligned constraints, the closure, E_planar when the

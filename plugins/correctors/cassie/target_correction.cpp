@@ -83,7 +83,11 @@ void assign_weights(std::vector<Candidate>& cands, const Curve& curve, const Net
     if (is_intersection(c)) {
       const Vec3 to = tangent(net.curves().at(c.curve).curve, c.t_curve);
       const double cs = ts.dot(to);
-      const bool aligned = c.kind == TargetKind::node ? cs > cos_theta : std::abs(cs) > cos_theta;
+      // Item 11. At a node, CASSIE's logs (raw_data alignTangents) align
+      // where our parametric tangents point opposite ways (README).
+      const bool aligned = c.kind != TargetKind::node ? std::abs(cs) > cos_theta
+                           : p.node_alignment == NodeAlignment::opposite ? cs < -cos_theta
+                                                                         : cs > cos_theta;
       if (aligned) c.tangent = cs >= 0 ? to : Vec3(-to);
     } else if (c.kind == TargetKind::mirror && ws.mirror_normal.norm() > 0) {
       const Vec3 n = ws.mirror_normal.normalized();

@@ -24,8 +24,9 @@ void place_on_stroke(std::vector<Candidate>& constraints, const Curve& curve);
 // Item 11 (`ConstraintSolver`): node 2, curve 1.5, grid and plane 1; at least
 // weight_endpoint when the constraint's point on the stroke is within δ of a
 // stroke end; + tangent_bonus, and a tangent target for E_tangent, when the
-// tangents align: for a curve |cos| > cos θ (at a node the tangents must
-// point the same way), for the plane the stroke tangent within θ of its
+// tangents align: for a curve |cos| > cos θ (at a node the parametric
+// tangents must point opposite ways, or the same way with
+// node_alignment = same), for the plane the stroke tangent within θ of its
 // normal. Needs place_on_stroke first.
 void assign_weights(std::vector<Candidate>& constraints, const Curve& curve, const Network& network,
                     const Workspace& workspace, const CassieParams& params, const Thresholds& th);

@@ -46,7 +46,9 @@ std::vector<std::size_t> find_corners(const std::vector<Vec3>& points,
                                       const BezierFitParams& params);
 
 // Corners as the CASSIE app finds them on the raw samples (reference item 4,
-// `GetG1sections`): the largest turn (sample_turns) of each run of samples
+// `GetG1sections`): the largest turn (sample_turns across the sample; the
+// consecutive reading finds fewer corners and agrees less with CASSIE's
+// curves, cassie README) of each run of samples
 // turning by more than `angle`, kept when the sections on both sides (from
 // the previous corner, to the end) have at least `min_samples` samples and
 // are longer than `min_length`. Indices strictly inside, increasing.

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "sketchlab/preprocess/turns.hpp"
 #include "sketchlab/types.hpp"
 
 namespace sketchlab {
@@ -62,14 +63,18 @@ IndexRange find_hookless_range(const std::vector<Vec3>& points, const HookParams
 // The CASSIE app's rule (reference item 3, `InputStroke.GetG1sections`):
 // from each end, scan the samples while the scanned polyline length is under
 // min(max_length, max_fraction of the stroke's length) and cut at the last
-// sample whose turn (sample_turns) exceeds min_angle, only if more than
-// min_remaining − 1 samples remain; there is no minimum hook length. The
-// end is scanned on what the start cut left.
+// sample whose turn (sample_turns with `span`) exceeds min_angle, only if
+// more than min_remaining − 1 samples remain; there is no minimum hook
+// length. The end is scanned on what the start cut left.
 struct TurnHookParams {
   double max_length = 0.06;        // 3δ (units of the points)
   double max_fraction = 0.15;
   double min_angle = std::numbers::pi / 6;
   std::size_t min_remaining = 5;   // "more than 4 samples remain"
+  // "where the averaged direction turns": from one sample to the next (the
+  // default, which agrees better with CASSIE's curves on its exported
+  // sessions; plugins/correctors/cassie/README.md) or across the sample.
+  TurnSpan span = TurnSpan::consecutive;
 };
 
 // Same contract as find_hookless_range (n >= 2, finite points); throws

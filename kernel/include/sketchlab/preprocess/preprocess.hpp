@@ -57,6 +57,7 @@ struct PreprocessParams {
   double app_end_trim = 0.02;                // s: samples this close to either end are removed
   double app_line_time = 0.05;               // s: a line is faster than δ per this time (item 2)
   double app_hook_angle = std::numbers::pi / 6;  // rad: turn that cuts a hook (item 3)
+  TurnSpan app_hook_turn = TurnSpan::consecutive;  // how that turn is measured (turns.hpp)
   int app_corner_min_samples = 4;            // a corner bounds sections of at least this many samples
   double app_corner_min_length_factor = 1.0;  // ×δ ... longer than this (item 4)
   int app_reparameterizations = 20;          // Schneider rounds (item 4)

@@ -44,8 +44,12 @@ TEST_CASE("Item 12: two constraints on one anchor: the closer to the curve wins,
   CHECK(b.anchor[0] == -1);
   CHECK(b.anchor[1] == 6);
   // Item 13: the dropped one counts nowhere, not even in Σ all weights.
-  CHECK(connectivity_energy(c, b, {1}) == Approx(std::exp(-1.0)));
-  CHECK(connectivity_energy(c, b, {}) == Approx(1.0));
+  CHECK(connectivity_energy(c, b, {1}, false) == Approx(std::exp(-1.0)));
+  CHECK(connectivity_energy(c, b, {}, false) == Approx(1.0));
+  // Thesis eq. 3.12: the total is over every detected constraint, weights
+  // 2 + 1, so the bound one alone gives exp(−(1/3)²).
+  CHECK(connectivity_energy(c, b, {1}, true) == Approx(std::exp(-1.0 / 9.0)));
+  CHECK(connectivity_energy(c, b, {}, true) == Approx(1.0));
   // The search only sees the bound one.
   SearchSettings st;
   st.planarity_weight = 0.0;
