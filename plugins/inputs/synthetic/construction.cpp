@@ -253,11 +253,31 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net) {
   if (first) take(*first);
 
   const std::vector<Vec3> pois = points_of_interest(net, tol);
-  // Order of preference: on what is drawn; construction (scaffold) before
-  // the model's curves; more ends on it; fewer dimension ticks to reach its
-  // start (with_guidelines places them); longer.
+  // A construction line touching a curve (not a line) of the model: a
+  // square's side tangent at a circle's joint, a cross line ending there.
+  // The circle is inscribed in its square through the ends of its cross, so
+  // the curve waits for them (the paper's figures: the scaffold first, the
+  // curves sketched over it, Fig. 1a-b, Fig. 9d-e).
+  auto touches = [&](const Curve& line, const Curve& c) {
+    const std::vector<Vec3> js = joints(c);
+    return closest_point(c, start(line)).distance <= tol || closest_point(c, end(line)).distance <= tol ||
+           std::any_of(js.begin(), js.end(), [&](const Vec3& j) { return closest_point(line, j).distance <= tol; });
+  };
+  std::vector<std::vector<std::size_t>> construction_of(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (net.curves[i].layer != Layer::scaffold && !is_line(net.curves[i].curve))
+      for (std::size_t j = 0; j < n; ++j)
+        if (net.curves[j].layer == Layer::scaffold && is_line(net.curves[j].curve) &&
+            touches(net.curves[j].curve, net.curves[i].curve))
+          construction_of[i].push_back(j);
+  // Order of preference: its construction drawn; on what is drawn;
+  // construction (scaffold) before the model's curves; more ends on it;
+  // fewer dimension ticks to reach its start (with_guidelines places them);
+  // longer.
   auto rank = [&](std::size_t i) {
     const Curve& c = net.curves[i].curve;
+    const bool waits = std::any_of(construction_of[i].begin(), construction_of[i].end(),
+                                   [&](std::size_t j) { return !drawn[j]; });
     int ends = 0;
     if (c.closed) {
       for (const Vec3& j : joints(c)) ends += on_drawing(j);
@@ -269,8 +289,8 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net) {
     // already there.
     if (is_line(c) && axis_of(end(c) - start(c)) < 0 && ends < 2) ends = -1;
     const std::size_t steps = ends == 0 ? axis_chain(pois, on_drawing, start(c)).size() - 1 : 0;
-    return std::make_tuple(ends > 0 ? 0 : 1, net.curves[i].layer == Layer::scaffold ? 0 : 1, -ends, steps,
-                           -length[i]);
+    return std::make_tuple(waits ? 2 : ends > 0 ? 0 : 1, net.curves[i].layer == Layer::scaffold ? 0 : 1, -ends,
+                           steps, -length[i]);
   };
   while (true) {
     std::optional<std::size_t> best;

@@ -189,3 +189,26 @@ TEST_CASE("the lamp's shade is placed by dimension ticks on guidelines (§2.3, F
                     [&](const Vec3& t) { return (t - (arm_end + Vec3(0.018, 0, 0))).norm() < 1e-9; }));
   CHECK(ticks.size() < 30);  // a few per part (20 now), not one per point
 }
+
+TEST_CASE("a model's curve is drawn on its finished construction: a circle after its square and cross", "[synthetic][construction]") {
+  for (const std::string model : {"mug", "lamp"}) {
+    INFO(model);
+    const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_model(model, model_center, 0.3)));
+    int curves = 0;
+    for (std::size_t i = 0; i < plan.curves.size(); ++i) {
+      const Curve& c = plan.curves[i].curve;
+      if (plan.curves[i].layer == Layer::scaffold || c.kind == CurveKind::line) continue;
+      ++curves;
+      // Every construction line through one of its joints (a side of its
+      // square, tangent there; a line of its cross, ending there) comes first.
+      for (std::size_t j = 0; j < plan.curves.size(); ++j) {
+        const Curve& l = plan.curves[j].curve;
+        if (plan.curves[j].layer != Layer::scaffold || l.kind != CurveKind::line) continue;
+        bool touches = false;
+        for (int k = 0; k <= c.segment_count(); ++k) touches = touches || closest_point(l, evaluate(c, k)).distance < 1e-9;
+        if (touches) CHECK(j < i);
+      }
+    }
+    CHECK(curves == (model == "mug" ? 5 : 6));  // circle halves (and the mug's handle)
+  }
+}
