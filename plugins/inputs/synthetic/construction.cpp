@@ -137,6 +137,24 @@ std::vector<Vec3> axis_chain(const std::vector<Vec3>& pois, const Known& known, 
   return {};
 }
 
+// Detail zoom (a choice; the paper gives no figures): a curve whose
+// projection spans less than 1.5 in (three times eq. 3's widest uncertainty
+// radius δ_max) is drawn zoomed in 4 times.
+constexpr double zoom_below = 1.5;  // inches on screen
+constexpr double zoom_factor = 4.0;
+
+// The view magnified k times about the pixel `at` (moved to the viewport's
+// centre): the image-space zoom of §2's interface. The eye stays, so the
+// 3D scene a stroke means is the same; only the pen's pixels shrink in it.
+View zoomed_view(const View& v, double k, const Vec2& at) {
+  View out = v;
+  const Vec4& vp = v.viewport;
+  const double ax = 2.0 * (at.x() - vp[0]) / vp[2] - 1.0, ay = 2.0 * (at.y() - vp[1]) / vp[3] - 1.0;
+  out.projection.row(0) = k * (v.projection.row(0) - ax * v.projection.row(3));
+  out.projection.row(1) = k * (v.projection.row(1) - ay * v.projection.row(3));
+  return out;
+}
+
 }  // namespace
 
 GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net) {
@@ -316,6 +334,21 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   const Vec3 forward = -camera.view.block<1, 3>(2, 0).transpose().normalized();
   const std::vector<Vec3> pois = points_of_interest(plan, tol);
   std::vector<PlannedStroke> out;
+  // The view the current curve and its aids are drawn in: the tablet's, or
+  // zoomed in on a small curve (see the header).
+  std::optional<View> zoom;
+  auto on_screen = [&](const View& v, const Vec3& x) {
+    const Vec3 px = world_to_pixel(v, x);
+    return px.z() >= 0 && px.x() >= v.viewport[0] && px.y() >= v.viewport[1] &&
+           px.x() <= v.viewport[0] + v.viewport[2] && px.y() <= v.viewport[1] + v.viewport[3];
+  };
+  // A stroke drawn zoomed in when it fits the zoomed screen; a guideline
+  // from a point far off is drawn before zooming in.
+  auto emit = [&](PlannedStroke s) {
+    if (zoom && on_screen(*zoom, s.curve.control_points.front()) && on_screen(*zoom, s.curve.control_points.back()))
+      s.zoomed = zoom;
+    out.push_back(std::move(s));
+  };
   // Lines drawn so far: ends, unit direction, whether it is a guideline (a
   // ray from a through b, as the corrector stores it).
   struct DrawnLine {
@@ -345,11 +378,27 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
           return true;
     return false;
   };
+  // The guideline stroke from `from` along d: 1.25× the length it serves
+  // and at least `zoom_below` on screen (a direction is drawn by a long,
+  // confident stroke toward its vanishing point, §2.2, Fig. 3b; a short one
+  // would fix it only to the pen's error over its length), in the zoomed
+  // view when it fits there.
+  auto guide_stroke = [&](const Vec3& from, const Vec3& d, double length) {
+    auto stroke_in = [&](const View& v) {
+      const double px_per_m =
+          (world_to_pixel(v, from + 1e-3 * d) - world_to_pixel(v, from)).head<2>().norm() / 1e-3;
+      return make_line(from, from + std::max(1.25 * length, zoom_below * v.dpi / px_per_m) * d);
+    };
+    PlannedStroke g{zoom ? stroke_in(*zoom) : stroke_in(camera), Layer::guide, std::nullopt};
+    if (zoom && !(on_screen(*zoom, g.curve.control_points.front()) && on_screen(*zoom, g.curve.control_points.back())))
+      g.curve = stroke_in(camera);
+    emit(std::move(g));
+  };
   // A guideline from `from` along ±d (the sense toward the vanishing point).
   auto guideline = [&](const Vec3& from, Vec3 d, double length) {
     if (d.dot(forward) < 0) d = -d;
     drawn_lines.push_back({from, from + length * d, d, true});
-    out.push_back({make_line(from, from + 1.25 * length * d), Layer::guide, std::nullopt});
+    guide_stroke(from, d, length);
   };
   // A guideline through `from` that reaches `to`: one already drawn, else
   // one drawn from `from` toward `to` (every vanishing point of the tablet
@@ -359,7 +408,7 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
     for (const DrawnLine& l : drawn_lines)
       if (l.guide && l.d.cross(d).norm() <= 1e-9 && on_drawn(l, from) && on_drawn(l, to)) return l;
     drawn_lines.push_back({from, to, d, true});
-    out.push_back({make_line(from, from + 1.25 * (to - from)), Layer::guide, std::nullopt});
+    guide_stroke(from, d, (to - from).norm());
     return drawn_lines.back();
   };
   // A 24 px tick mark across the line l at x (§2.3). The corrector locates
@@ -368,8 +417,9 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   // too.
   auto tick = [&](const DrawnLine& l, const Vec3& x) {
     const Vec3 across = l.d.cross(x - eye).normalized();
-    const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (camera.projection(1, 1) * camera.viewport[3]);
-    out.push_back({make_line(x - half * across, x + half * across), Layer::scaffold, std::nullopt});
+    const View& v = zoom && on_screen(*zoom, x) ? *zoom : camera;
+    const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (v.projection(1, 1) * v.viewport[3]);
+    emit({make_line(x - half * across, x + half * across), Layer::scaffold, std::nullopt});
     if (!l.guide) return;
     vertices.push_back(x);
     for (const DrawnLine& o : drawn_lines) {
@@ -426,6 +476,13 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   };
   for (std::size_t i = 0; i < plan.curves.size(); ++i) {
     const GroundTruthCurve& gc = plan.curves[i];
+    // A curve smaller on screen than `zoom_below` is drawn, with its aids,
+    // zoomed in `zoom_factor` times about its middle.
+    Eigen::AlignedBox2d extent;
+    for (int k = 0; k <= 16; ++k) extent.extend(world_to_pixel(camera, evaluate(gc.curve, gc.curve.t_max() * k / 16.0)).head<2>());
+    zoom.reset();
+    if (extent.diagonal().norm() < zoom_below * camera.dpi)
+      zoom = zoomed_view(camera, zoom_factor, extent.center());
     const bool axis_line = is_line(gc.curve) && axis_of(end(gc.curve) - start(gc.curve)) >= 0;
     make_known(start(gc.curve));
     // Its length by a tick too (the paper's cube "required our guideline
@@ -451,7 +508,7 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
         tick(drawn_lines.back(), x);
       }
     }
-    out.push_back({gc.curve, gc.layer, i});
+    emit({gc.curve, gc.layer, i});
     vertices.push_back(start(gc.curve));
     vertices.push_back(end(gc.curve));
     if (!is_line(gc.curve)) continue;

@@ -50,7 +50,9 @@ GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net);
 // with an end on what is drawn, construction (scaffold) before the model's,
 // most ends first, longest first (ties keep network order), reversed to
 // start from the drawing when only its end is on it. A line along no axis
-// waits until both its ends are drawn (it has no guideline to trace). When
+// waits until both its ends are drawn (it has no guideline to trace); a
+// model's curve (not a line) until every construction line touching it is
+// (a circle half: its square's sides and its cross). When
 // nothing left touches the drawing, the curve whose start the fewest
 // dimension ticks reach from it (with_guidelines draws them).
 GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net);
