@@ -342,11 +342,15 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
     return px.z() >= 0 && px.x() >= v.viewport[0] && px.y() >= v.viewport[1] &&
            px.x() <= v.viewport[0] + v.viewport[2] && px.y() <= v.viewport[1] + v.viewport[3];
   };
-  // A stroke drawn zoomed in when it fits the zoomed screen; a guideline
-  // from a point far off is drawn before zooming in.
-  auto emit = [&](PlannedStroke s) {
+  // The stroke `make` draws in a view, drawn zoomed in when it fits the
+  // zoomed screen (a guideline from a point far off is drawn before zooming
+  // in); `make` sizes it for the view it is drawn in.
+  auto emit = [&](const auto& make, Layer layer, std::optional<std::size_t> intended = std::nullopt) {
+    PlannedStroke s{make(zoom ? *zoom : camera), layer, intended};
     if (zoom && on_screen(*zoom, s.curve.control_points.front()) && on_screen(*zoom, s.curve.control_points.back()))
       s.zoomed = zoom;
+    else if (zoom)
+      s.curve = make(camera);
     out.push_back(std::move(s));
   };
   // Lines drawn so far: ends, unit direction, whether it is a guideline (a
@@ -384,15 +388,13 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   // would fix it only to the pen's error over its length), in the zoomed
   // view when it fits there.
   auto guide_stroke = [&](const Vec3& from, const Vec3& d, double length) {
-    auto stroke_in = [&](const View& v) {
-      const double px_per_m =
-          (world_to_pixel(v, from + 1e-3 * d) - world_to_pixel(v, from)).head<2>().norm() / 1e-3;
-      return make_line(from, from + std::max(1.25 * length, zoom_below * v.dpi / px_per_m) * d);
-    };
-    PlannedStroke g{zoom ? stroke_in(*zoom) : stroke_in(camera), Layer::guide, std::nullopt};
-    if (zoom && !(on_screen(*zoom, g.curve.control_points.front()) && on_screen(*zoom, g.curve.control_points.back())))
-      g.curve = stroke_in(camera);
-    emit(std::move(g));
+    emit(
+        [&](const View& v) {
+          const double px_per_m =
+              (world_to_pixel(v, from + 1e-3 * d) - world_to_pixel(v, from)).head<2>().norm() / 1e-3;
+          return make_line(from, from + std::max(1.25 * length, zoom_below * v.dpi / px_per_m) * d);
+        },
+        Layer::guide);
   };
   // A guideline from `from` along ±d (the sense toward the vanishing point).
   auto guideline = [&](const Vec3& from, Vec3 d, double length) {
@@ -417,9 +419,12 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   // too.
   auto tick = [&](const DrawnLine& l, const Vec3& x) {
     const Vec3 across = l.d.cross(x - eye).normalized();
-    const View& v = zoom && on_screen(*zoom, x) ? *zoom : camera;
-    const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (v.projection(1, 1) * v.viewport[3]);
-    emit({make_line(x - half * across, x + half * across), Layer::scaffold, std::nullopt});
+    emit(
+        [&](const View& v) {
+          const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (v.projection(1, 1) * v.viewport[3]);
+          return make_line(x - half * across, x + half * across);
+        },
+        Layer::scaffold);
     if (!l.guide) return;
     vertices.push_back(x);
     for (const DrawnLine& o : drawn_lines) {
@@ -479,7 +484,8 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
     // A curve smaller on screen than `zoom_below` is drawn, with its aids,
     // zoomed in `zoom_factor` times about its middle.
     Eigen::AlignedBox2d extent;
-    for (int k = 0; k <= 16; ++k) extent.extend(world_to_pixel(camera, evaluate(gc.curve, gc.curve.t_max() * k / 16.0)).head<2>());
+    for (int k = 0; k <= 16; ++k)
+      extent.extend(world_to_pixel(camera, evaluate(gc.curve, gc.curve.t_max() * k / 16.0)).head<2>());
     zoom.reset();
     if (extent.diagonal().norm() < zoom_below * camera.dpi)
       zoom = zoomed_view(camera, zoom_factor, extent.center());
@@ -508,7 +514,7 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
         tick(drawn_lines.back(), x);
       }
     }
-    emit({gc.curve, gc.layer, i});
+    emit([&](const View&) { return gc.curve; }, gc.layer, i);
     vertices.push_back(start(gc.curve));
     vertices.push_back(end(gc.curve));
     if (!is_line(gc.curve)) continue;
