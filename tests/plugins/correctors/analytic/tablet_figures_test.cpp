@@ -37,8 +37,8 @@ TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet s
       // The handle takes a third constraint point at another depth (README).
       {"mug_analytic", {0.0065, 0.85, 0.60, 0.68, 0.76}},
       // The shade is placed by dimension ticks from the arm end (before
-      // them: 61 mm, worse than freehand's 42 mm) and drawn zoomed in
-      // (before: 15 mm; README).
+      // them: 61 mm, worse than freehand's 42 mm), its circles on their
+      // finished squares, its small parts zoomed in (before: 16 mm; README).
       {"lamp_analytic", {0.0055, 0.30, 0.26, 0.85, 0.68}},
   };
   std::vector<fs::path> recordings;
