@@ -137,6 +137,24 @@ std::vector<Vec3> axis_chain(const std::vector<Vec3>& pois, const Known& known, 
   return {};
 }
 
+// Detail zoom (a choice; the paper gives no figures): a curve whose
+// projection spans less than 1.5 in (three times eq. 3's widest uncertainty
+// radius δ_max) is drawn zoomed in 4 times.
+constexpr double zoom_below = 1.5;  // inches on screen
+constexpr double zoom_factor = 4.0;
+
+// The view magnified k times about the pixel `at` (moved to the viewport's
+// centre): the image-space zoom of §2's interface. The eye stays, so the
+// 3D scene a stroke means is the same; only the pen's pixels shrink in it.
+View zoomed_view(const View& v, double k, const Vec2& at) {
+  View out = v;
+  const Vec4& vp = v.viewport;
+  const double ax = 2.0 * (at.x() - vp[0]) / vp[2] - 1.0, ay = 2.0 * (at.y() - vp[1]) / vp[3] - 1.0;
+  out.projection.row(0) = k * (v.projection.row(0) - ax * v.projection.row(3));
+  out.projection.row(1) = k * (v.projection.row(1) - ay * v.projection.row(3));
+  return out;
+}
+
 }  // namespace
 
 GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net) {
@@ -253,11 +271,31 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net) {
   if (first) take(*first);
 
   const std::vector<Vec3> pois = points_of_interest(net, tol);
-  // Order of preference: on what is drawn; construction (scaffold) before
-  // the model's curves; more ends on it; fewer dimension ticks to reach its
-  // start (with_guidelines places them); longer.
+  // A construction line touching a curve (not a line) of the model: a
+  // square's side tangent at a circle's joint, a cross line ending there.
+  // The circle is inscribed in its square through the ends of its cross, so
+  // the curve waits for them (the paper's figures: the scaffold first, the
+  // curves sketched over it, Fig. 1a-b, Fig. 9d-e).
+  auto touches = [&](const Curve& line, const Curve& c) {
+    const std::vector<Vec3> js = joints(c);
+    return closest_point(c, start(line)).distance <= tol || closest_point(c, end(line)).distance <= tol ||
+           std::any_of(js.begin(), js.end(), [&](const Vec3& j) { return closest_point(line, j).distance <= tol; });
+  };
+  std::vector<std::vector<std::size_t>> construction_of(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (net.curves[i].layer != Layer::scaffold && !is_line(net.curves[i].curve))
+      for (std::size_t j = 0; j < n; ++j)
+        if (net.curves[j].layer == Layer::scaffold && is_line(net.curves[j].curve) &&
+            touches(net.curves[j].curve, net.curves[i].curve))
+          construction_of[i].push_back(j);
+  // Order of preference: its construction drawn; on what is drawn;
+  // construction (scaffold) before the model's curves; more ends on it;
+  // fewer dimension ticks to reach its start (with_guidelines places them);
+  // longer.
   auto rank = [&](std::size_t i) {
     const Curve& c = net.curves[i].curve;
+    const bool waits = std::any_of(construction_of[i].begin(), construction_of[i].end(),
+                                   [&](std::size_t j) { return !drawn[j]; });
     int ends = 0;
     if (c.closed) {
       for (const Vec3& j : joints(c)) ends += on_drawing(j);
@@ -269,8 +307,8 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net) {
     // already there.
     if (is_line(c) && axis_of(end(c) - start(c)) < 0 && ends < 2) ends = -1;
     const std::size_t steps = ends == 0 ? axis_chain(pois, on_drawing, start(c)).size() - 1 : 0;
-    return std::make_tuple(ends > 0 ? 0 : 1, net.curves[i].layer == Layer::scaffold ? 0 : 1, -ends, steps,
-                           -length[i]);
+    return std::make_tuple(waits ? 2 : ends > 0 ? 0 : 1, net.curves[i].layer == Layer::scaffold ? 0 : 1, -ends,
+                           steps, -length[i]);
   };
   while (true) {
     std::optional<std::size_t> best;
@@ -296,6 +334,25 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   const Vec3 forward = -camera.view.block<1, 3>(2, 0).transpose().normalized();
   const std::vector<Vec3> pois = points_of_interest(plan, tol);
   std::vector<PlannedStroke> out;
+  // The view the current curve and its aids are drawn in: the tablet's, or
+  // zoomed in on a small curve (see the header).
+  std::optional<View> zoom;
+  auto on_screen = [&](const View& v, const Vec3& x) {
+    const Vec3 px = world_to_pixel(v, x);
+    return px.z() >= 0 && px.x() >= v.viewport[0] && px.y() >= v.viewport[1] &&
+           px.x() <= v.viewport[0] + v.viewport[2] && px.y() <= v.viewport[1] + v.viewport[3];
+  };
+  // The stroke `make` draws in a view, drawn zoomed in when it fits the
+  // zoomed screen (a guideline from a point far off is drawn before zooming
+  // in); `make` sizes it for the view it is drawn in.
+  auto emit = [&](const auto& make, Layer layer, std::optional<std::size_t> intended = std::nullopt) {
+    PlannedStroke s{make(zoom ? *zoom : camera), layer, intended};
+    if (zoom && on_screen(*zoom, s.curve.control_points.front()) && on_screen(*zoom, s.curve.control_points.back()))
+      s.zoomed = zoom;
+    else if (zoom)
+      s.curve = make(camera);
+    out.push_back(std::move(s));
+  };
   // Lines drawn so far: ends, unit direction, whether it is a guideline (a
   // ray from a through b, as the corrector stores it).
   struct DrawnLine {
@@ -325,11 +382,25 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
           return true;
     return false;
   };
+  // The guideline stroke from `from` along d: 1.25× the length it serves
+  // and at least `zoom_below` on screen (a direction is drawn by a long,
+  // confident stroke toward its vanishing point, §2.2, Fig. 3b; a short one
+  // would fix it only to the pen's error over its length), in the zoomed
+  // view when it fits there.
+  auto guide_stroke = [&](const Vec3& from, const Vec3& d, double length) {
+    emit(
+        [&](const View& v) {
+          const double px_per_m =
+              (world_to_pixel(v, from + 1e-3 * d) - world_to_pixel(v, from)).head<2>().norm() / 1e-3;
+          return make_line(from, from + std::max(1.25 * length, zoom_below * v.dpi / px_per_m) * d);
+        },
+        Layer::guide);
+  };
   // A guideline from `from` along ±d (the sense toward the vanishing point).
   auto guideline = [&](const Vec3& from, Vec3 d, double length) {
     if (d.dot(forward) < 0) d = -d;
     drawn_lines.push_back({from, from + length * d, d, true});
-    out.push_back({make_line(from, from + 1.25 * length * d), Layer::guide, std::nullopt});
+    guide_stroke(from, d, length);
   };
   // A guideline through `from` that reaches `to`: one already drawn, else
   // one drawn from `from` toward `to` (every vanishing point of the tablet
@@ -339,7 +410,7 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
     for (const DrawnLine& l : drawn_lines)
       if (l.guide && l.d.cross(d).norm() <= 1e-9 && on_drawn(l, from) && on_drawn(l, to)) return l;
     drawn_lines.push_back({from, to, d, true});
-    out.push_back({make_line(from, from + 1.25 * (to - from)), Layer::guide, std::nullopt});
+    guide_stroke(from, d, (to - from).norm());
     return drawn_lines.back();
   };
   // A 24 px tick mark across the line l at x (§2.3). The corrector locates
@@ -348,8 +419,12 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   // too.
   auto tick = [&](const DrawnLine& l, const Vec3& x) {
     const Vec3 across = l.d.cross(x - eye).normalized();
-    const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (camera.projection(1, 1) * camera.viewport[3]);
-    out.push_back({make_line(x - half * across, x + half * across), Layer::scaffold, std::nullopt});
+    emit(
+        [&](const View& v) {
+          const double half = 12.0 * 2.0 * (x - eye).dot(forward) / (v.projection(1, 1) * v.viewport[3]);
+          return make_line(x - half * across, x + half * across);
+        },
+        Layer::scaffold);
     if (!l.guide) return;
     vertices.push_back(x);
     for (const DrawnLine& o : drawn_lines) {
@@ -406,6 +481,14 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
   };
   for (std::size_t i = 0; i < plan.curves.size(); ++i) {
     const GroundTruthCurve& gc = plan.curves[i];
+    // A curve smaller on screen than `zoom_below` is drawn, with its aids,
+    // zoomed in `zoom_factor` times about its middle.
+    Eigen::AlignedBox2d extent;
+    for (int k = 0; k <= 16; ++k)
+      extent.extend(world_to_pixel(camera, evaluate(gc.curve, gc.curve.t_max() * k / 16.0)).head<2>());
+    zoom.reset();
+    if (extent.diagonal().norm() < zoom_below * camera.dpi)
+      zoom = zoomed_view(camera, zoom_factor, extent.center());
     const bool axis_line = is_line(gc.curve) && axis_of(end(gc.curve) - start(gc.curve)) >= 0;
     make_known(start(gc.curve));
     // Its length by a tick too (the paper's cube "required our guideline
@@ -431,7 +514,7 @@ std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const
         tick(drawn_lines.back(), x);
       }
     }
-    out.push_back({gc.curve, gc.layer, i});
+    emit([&](const View&) { return gc.curve; }, gc.layer, i);
     vertices.push_back(start(gc.curve));
     vertices.push_back(end(gc.curve));
     if (!is_line(gc.curve)) continue;

@@ -50,7 +50,9 @@ GroundTruthNetwork with_construction_scaffold(const GroundTruthNetwork& net);
 // with an end on what is drawn, construction (scaffold) before the model's,
 // most ends first, longest first (ties keep network order), reversed to
 // start from the drawing when only its end is on it. A line along no axis
-// waits until both its ends are drawn (it has no guideline to trace). When
+// waits until both its ends are drawn (it has no guideline to trace); a
+// model's curve (not a line) until every construction line touching it is
+// (a circle half: its square's sides and its cross). When
 // nothing left touches the drawing, the curve whose start the fewest
 // dimension ticks reach from it (with_guidelines draws them).
 GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net);
@@ -79,7 +81,14 @@ GroundTruthNetwork plan_analytic_drawing(const GroundTruthNetwork& net);
 //    and to the view ray), so the curve end becomes a known point.
 // Ticks, like guidelines, have no `intended` curve. Every vanishing point
 // of the tablet view is off screen, where the corrector takes a guideline
-// drawn either way (§2.2).
+// drawn either way (§2.2). A guideline stroke is about 1.5 in long on
+// screen at least (scaled at its start) (a direction drawn over a short stroke is only as good as the
+// pen's error over its length). Detail zoom (§2's image-space pan/zoom): a
+// curve whose projection spans less than 1.5 in is drawn, with the aids
+// drawn for it, in `camera` zoomed in 4 times about its middle (same eye:
+// the pen's pixels shrink in the scene); an aid that would leave that
+// screen is drawn unzoomed. Both constants are choices (the paper gives
+// none), 1.5 in being three times eq. 3's widest uncertainty radius.
 std::vector<PlannedStroke> with_guidelines(const GroundTruthNetwork& plan, const View& camera);
 
 }  // namespace sketchlab::synthetic

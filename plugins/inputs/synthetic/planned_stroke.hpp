@@ -9,6 +9,7 @@
 
 #include "sketchlab/curve.hpp"
 #include "sketchlab/stroke.hpp"
+#include "sketchlab/view.hpp"
 
 namespace sketchlab::synthetic {
 
@@ -18,6 +19,7 @@ struct PlannedStroke {
   std::optional<std::size_t> intended;
   int view = 0;
   std::optional<Vec4> draw_plane;  // (n, d) with n·x = d, |n| = 1
+  std::optional<View> zoomed;      // drawn in this view instead (same eye, image zoom)
 };
 
 }  // namespace sketchlab::synthetic

@@ -124,7 +124,7 @@ Recording synthesize_session(const SynthesisParams& p) {
       s.samples = synthesize_vr_stroke(planned.curve, vr_head_position, noise, motion, time, rng);
       s.view = head;
     } else {
-      const View& v = planned.view == 0 ? camera : second;
+      const View& v = planned.zoomed ? *planned.zoomed : planned.view == 0 ? camera : second;
       s.samples = synthesize_tablet_stroke(planned.curve, v, noise, motion, time, rng);
       s.view = v;
       s.samples_are_pixels = true;

@@ -189,3 +189,59 @@ TEST_CASE("the lamp's shade is placed by dimension ticks on guidelines (§2.3, F
                     [&](const Vec3& t) { return (t - (arm_end + Vec3(0.018, 0, 0))).norm() < 1e-9; }));
   CHECK(ticks.size() < 30);  // a few per part (20 now), not one per point
 }
+
+TEST_CASE("a model's curve is drawn on its finished construction: a circle after its square and cross", "[synthetic][construction]") {
+  for (const std::string model : {"mug", "lamp"}) {
+    INFO(model);
+    const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_model(model, model_center, 0.3)));
+    int curves = 0;
+    for (std::size_t i = 0; i < plan.curves.size(); ++i) {
+      const Curve& c = plan.curves[i].curve;
+      if (plan.curves[i].layer == Layer::scaffold || c.kind == CurveKind::line) continue;
+      ++curves;
+      // Every construction line through one of its joints (a side of its
+      // square, tangent there; a line of its cross, ending there) comes first.
+      for (std::size_t j = 0; j < plan.curves.size(); ++j) {
+        const Curve& l = plan.curves[j].curve;
+        if (plan.curves[j].layer != Layer::scaffold || l.kind != CurveKind::line) continue;
+        bool touches = false;
+        for (int k = 0; k <= c.segment_count(); ++k) touches = touches || closest_point(l, evaluate(c, k)).distance < 1e-9;
+        if (touches) CHECK(j < i);
+      }
+    }
+    CHECK(curves == (model == "mug" ? 5 : 6));  // circle halves (and the mug's handle)
+  }
+}
+
+TEST_CASE("small curves are drawn zoomed in, guidelines long enough (§2, §2.2)", "[synthetic][construction]") {
+  for (const std::string model : {"cube", "lamp"}) {
+    INFO(model);
+    const GroundTruthNetwork plan = plan_analytic_drawing(with_construction_scaffold(make_model(model, model_center, 0.3)));
+    const View camera = tablet_view(plan);
+    const auto strokes = with_guidelines(plan, camera);
+    int zoomed = 0;
+    for (const PlannedStroke& s : strokes) {
+      const View& v = s.zoomed ? *s.zoomed : camera;
+      const Vec3 a = world_to_pixel(v, s.curve.control_points.front()), b = world_to_pixel(v, s.curve.control_points.back());
+      if (s.zoomed) {
+        ++zoomed;
+        // Image-space zoom: the same eye, four times the magnification, the
+        // stroke on the screen.
+        CHECK((eye_position(*s.zoomed) - eye_position(camera)).norm() < 1e-9);
+        CHECK(s.zoomed->projection(1, 1) == Approx(4 * camera.projection(1, 1)));
+        for (const Vec3& p : {a, b})
+          CHECK((p.x() >= 0 && p.x() <= 1600 && p.y() >= 0 && p.y() <= 1000));
+      }
+      // About 1.5 in at least (the scale is taken at its start; a receding
+      // line shortens on screen).
+      if (s.layer == Layer::guide) CHECK((a - b).head<2>().norm() >= 0.8 * 1.5 * 96);
+      if (!s.intended) continue;
+      Eigen::AlignedBox2d extent;
+      for (int k = 0; k <= 16; ++k)
+        extent.extend(world_to_pixel(camera, evaluate(s.curve, s.curve.t_max() * k / 16.0)).head<2>());
+      CHECK(s.zoomed.has_value() == (extent.diagonal().norm() < 1.5 * 96));
+    }
+    if (model == "cube") CHECK(zoomed == 0);
+    else CHECK(zoomed > 10);
+  }
+}
