@@ -42,7 +42,7 @@ const ParamTable<AnalyticParams>& parameters() {
       .boolean("ellipse_snap", &A::ellipse_snap, "snap a planar curve close to an elliptic arc onto it, §3.2")
       .real("ellipse_tolerance", &A::ellipse_tolerance, 0.0, 1.0, "", "elliptic-arc snap: largest deviation / major semi-axis (1 %)")
       .real("guideline_angle", &A::guideline_angle, 0.0, 45.0, "deg", "guideline stroke within this angle of a vanishing direction, §2.2 (3°)", degrees)
-      .real("vanishing_merge", &A::vanishing_merge, 0.0, 45.0, "deg", "a segment within this angle of a vanishing direction adds no new one, §5 / Fig. 11d (0.26°)", degrees)
+      .real("vanishing_merge", &A::vanishing_merge, 0.0, 45.0, "deg", "a segment within this angle of a vanishing direction adds no new one, §4.1–4.2 / Fig. 11d (0.26°)", degrees)
       .real("tick_length", &A::tick_length, 0.0, 10.0, "in", "dimension ticks are shorter than this, §2.3 (0.4 in)")
       .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1")
       .boolean("remove_hooks", &A::remove_hooks, "cut a hook (a sharp flick) at either end of a stroke before inference (not in the paper)")

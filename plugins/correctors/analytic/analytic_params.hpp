@@ -37,7 +37,7 @@ struct AnalyticParams {
   double f_curve_intersection = 1.0;  // C°: stroke crosses a curve's projection (c)
   // Cᵈ: existing vanishing direction (h). Above f_through: a segment between
   // two points placed by eye stays on the vanishing direction it nearly
-  // follows (§5 / Fig. 11: nearly-parallel directions propagate; README).
+  // follows (§4.1–4.2 / Fig. 11: nearly-parallel directions propagate; README).
   double f_vanishing = 2.0;
   double f_through = 1.0;       // Cᵈ: line through a scaffold vertex (e, f)
   double f_perpendicular = 0.8; // Cᵈ: perpendicular direction (g)
@@ -71,7 +71,7 @@ struct AnalyticParams {
   // Guidelines: stroke direction within this angle of a vanishing direction.
   double guideline_angle = 3.0 * degrees;
   // A segment within this angle of an existing vanishing direction adds no
-  // vanishing direction of its own (§5: nearly-parallel vanishing directions,
+  // vanishing direction of its own (§4.2: nearly-parallel vanishing directions,
   // Fig. 11d; the paper suggests "automatic filtering").
   double vanishing_merge = std::acos(0.99999);
   // Dimension ticks: straight strokes shorter than this (in) crossing a guideline.

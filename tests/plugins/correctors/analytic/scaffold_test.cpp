@@ -1,4 +1,4 @@
-// Scaffold vanishing directions (Schmidt et al. 2009 §2, §5 / Fig. 11d): the
+// Scaffold vanishing directions (Schmidt et al. 2009 §2, §4.2 / Fig. 11d): the
 // first segment defines the primary directions; a later segment skewed from
 // one of them adds a vanishing direction of its own unless it lies within
 // `vanishing_merge` of it (the paper's suggested filtering of
