@@ -12,6 +12,7 @@
 #
 #   scripts/tablet-sweep.sh OUT
 #   MODELS="cube lamp" SEEDS="1 2" NOISES="0 1" STYLES=analytic scripts/tablet-sweep.sh OUT
+#   ANALYTIC_PARAMS="f_vanishing: 1" scripts/tablet-sweep.sh OUT   # the analytic stack's params (YAML map body)
 #
 # Needs build/bin/sketchlab (scripts/build.sh sketchlab_cli).
 set -euo pipefail
@@ -40,7 +41,7 @@ experiment: tablet-sweep
 recordings: [sessions/*.jsonl]
 stacks:
   - {name: freehand, corrector: {plugin: freehand}}
-  - {name: analytic, corrector: {plugin: analytic}}
+  - {name: analytic, corrector: {plugin: analytic, params: {${ANALYTIC_PARAMS:-}}}}
   - {name: justdrawit, corrector: {plugin: justdrawit}}
 outputs: {dir: $out/runs, timestamp: false, report: true, sketch_json: false, stroke_csv: false, ply: false, obj: false, mlp: false, pictures: false}
 EOF

@@ -75,7 +75,7 @@ Correction AnalyticCorrector::correct(const Stroke& stroke, const Sketch& sketch
   }
   try {
     const Vec3 up = sketch.workspace.up.normalized();
-    Scaffold scaffold = build_scaffold(sketch.network, up);
+    Scaffold scaffold = build_scaffold(sketch.network, up, params_.vanishing_merge);
     StrokeOutcome out = analyse_stroke(stroke, scaffold, sketch, params_, true);
     CurveId next = sketch.network.next_curve_id();
     for (NetworkCurve& nc : out.added) {

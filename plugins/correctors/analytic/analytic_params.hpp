@@ -2,6 +2,7 @@
 // Parameters of the analytic-drawing corrector (Schmidt et al. 2009). Lengths
 // on the input surface are inches (converted to pixels with View::dpi, §3.1),
 // angles radians, 3D lengths metres.
+#include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <vector>
@@ -34,7 +35,10 @@ struct AnalyticParams {
   double f_intersection = 1.0;  // C°: guideline / line intersection (b, c)
   double f_on_line = 0.5;       // C°: nearest point on a guideline or line (d)
   double f_curve_intersection = 1.0;  // C°: stroke crosses a curve's projection (c)
-  double f_vanishing = 1.0;     // Cᵈ: existing vanishing direction (h)
+  // Cᵈ: existing vanishing direction (h). Above f_through: a segment between
+  // two points placed by eye stays on the vanishing direction it nearly
+  // follows (§4.1–4.2 / Fig. 11: nearly-parallel directions propagate; README).
+  double f_vanishing = 2.0;
   double f_through = 1.0;       // Cᵈ: line through a scaffold vertex (e, f)
   double f_perpendicular = 0.8; // Cᵈ: perpendicular direction (g)
   double f_dist_point = 1.0;    // Cᵗ: ends on a position constraint
@@ -66,6 +70,10 @@ struct AnalyticParams {
   bool ellipse_snap = true;
   // Guidelines: stroke direction within this angle of a vanishing direction.
   double guideline_angle = 3.0 * degrees;
+  // A segment within this angle of an existing vanishing direction adds no
+  // vanishing direction of its own (§4.2: nearly-parallel vanishing directions,
+  // Fig. 11d; the paper suggests "automatic filtering").
+  double vanishing_merge = std::acos(0.99999);
   // Dimension ticks: straight strokes shorter than this (in) crossing a guideline.
   double tick_length = 0.4;
   bool reinfer_free = true;

@@ -7,12 +7,10 @@ namespace sketchlab::analytic {
 
 namespace {
 
-constexpr double parallel_cos = 0.99999;  // directions within ~0.26° share a vanishing point
-
 void add_vanishing(Scaffold& s, const Vec3& d) {
   if (!(d.norm() > 0.5)) return;
   for (const Vec3& e : s.vanishing)
-    if (std::abs(e.dot(d)) > parallel_cos) return;
+    if (std::abs(e.dot(d)) > s.vanishing_merge_cos) return;
   s.vanishing.push_back(d);
 }
 
@@ -107,8 +105,9 @@ int Scaffold::segment_count() const {
                                         [](const ScaffoldLine& l) { return !l.guide; }));
 }
 
-Scaffold build_scaffold(const Network& network, const Vec3& up) {
+Scaffold build_scaffold(const Network& network, const Vec3& up, double vanishing_merge) {
   Scaffold s;
+  s.vanishing_merge_cos = std::cos(vanishing_merge);
   Box3 box;
   for (const auto& [id, nc] : network.curves())
     if (nc.layer != Layer::guide)

@@ -32,6 +32,9 @@ struct Scaffold {
   std::vector<ScaffoldVertex> vertices;  // segment / curve ends, ticks (merged)
   std::vector<ScaffoldCurve> curves;
   std::vector<Vec3> vanishing;      // unit directions, one per parallel class
+  // A segment within this angle of a vanishing direction adds none of its
+  // own (cos of build_scaffold's `vanishing_merge`).
+  double vanishing_merge_cos = 1.0;
   double extent = 1.0;              // bounding-box diagonal (>= 1e-3), metres
   double tolerance = 1e-9;          // "lies on" tolerance, metres (1e-7 extent)
   // Segment lengths and directions with multiplicities (equal within 1e-9
@@ -45,7 +48,9 @@ struct Scaffold {
 // Reads every curve of the network. `up` seeds the vanishing directions with
 // the vertical; the first segment adds its own direction and its horizontal
 // perpendicular (§2: the first stroke defines the primary vanishing points).
-Scaffold build_scaffold(const Network& network, const Vec3& up);
+// Every later segment adds its direction unless it lies within
+// `vanishing_merge` radians of one already there.
+Scaffold build_scaffold(const Network& network, const Vec3& up, double vanishing_merge);
 
 // Adds one curve (as build_scaffold would) so newly inferred geometry is seen
 // when free strokes are re-inferred.

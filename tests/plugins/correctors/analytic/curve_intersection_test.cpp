@@ -55,7 +55,7 @@ bool has_curve_constraint(const Correction& r, CurveId id) {
 }
 
 LineCandidates candidates(const Scene& sc, const Stroke& stroke, const AnalyticParams& p) {
-  const Scaffold s = build_scaffold(sc.sketch.network, Vec3::UnitY());
+  const Scaffold s = build_scaffold(sc.sketch.network, Vec3::UnitY(), AnalyticParams{}.vanishing_merge);
   const Camera cam(sc.view);
   const Stroke2d s2 = make_stroke_2d(stroke, cam.dpi(), p);
   StrokeEnd ends[2];

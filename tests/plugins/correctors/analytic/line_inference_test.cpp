@@ -34,7 +34,7 @@ bool at(const Vec3& p, const Vec3& q) { return (p - q).norm() < 1e-9; }
 TEST_CASE("a nearest point on a line along the segment is not a position constraint",
           "[analytic][line]") {
   const Sketch sketch = scene();
-  const Scaffold s = build_scaffold(sketch.network, Vec3::UnitY());
+  const Scaffold s = build_scaffold(sketch.network, Vec3::UnitY(), AnalyticParams{}.vanishing_merge);
   const Camera cam(view);
   const AnalyticParams p;
   // Over the guideline from V, ending 0.6 δ_min short of T's projection (the

@@ -32,14 +32,18 @@ struct Figures {
 TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet sessions", "[analytic][tablet][slow]") {
   // Figures reached at seed 1, default noise (README), with a margin.
   const std::map<std::string, Figures> expected{
-      {"cube_analytic", {0.0040, 0.75, 0.80, 0.95, 0.83}},
+      // Since f_vanishing = 2 an edge between two ticked corners follows its
+      // vanishing direction and may miss the far tick (coincident 1 → 0.83).
+      {"cube_analytic", {0.0045, 0.95, 0.80, 0.80, 0.83}},
       {"chair_analytic", {0.0022, 0.95, 0.95, 0.95, 0.76}},
       // The handle takes a third constraint point at another depth (README).
-      {"mug_analytic", {0.0065, 0.85, 0.60, 0.68, 0.76}},
+      {"mug_analytic", {0.0065, 0.80, 0.70, 0.85, 0.76}},
       // The shade is placed by dimension ticks from the arm end (before
       // them: 61 mm, worse than freehand's 42 mm), its circles on their
-      // finished squares, its small parts zoomed in (before: 16 mm; README).
-      {"lamp_analytic", {0.0055, 0.30, 0.26, 0.85, 0.68}},
+      // finished squares, its small parts zoomed in (before: 16 mm); the
+      // base's diameters between joints placed by eye stay on their
+      // vanishing directions (before f_vanishing = 2: parallel 0.33; README).
+      {"lamp_analytic", {0.0040, 0.70, 0.50, 0.80, 0.66}},
   };
   std::vector<fs::path> recordings;
   for (const auto& [name, f] : expected) recordings.push_back(test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
