@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sketchlab/geometry/plane.hpp"
 #include "sketchlab/lab/distribution.hpp"
 
 namespace sketchlab::cli {
@@ -158,6 +159,12 @@ void count_decisions(const std::vector<TeacherForcedStroke>& strokes,
       ++(*cassie ? (our ? n.both : n.cassie_only) : (our ? n.ours_only : n.neither));
     };
     if (bezier) add(0, counts.planar, log.planar, ours.planar);
+    if (bezier && !log.mirrored_twin && log.planar.value_or(false))
+      for (const Constraint& c : r.constraints)
+        if (c.kind == ConstraintKind::planar || c.kind == ConstraintKind::axis_plane) {
+          counts.ours_to_plane.push_back(plane_residual(r.output_curve.control_points, c.target));
+          counts.cassie_to_plane.push_back(plane_residual(r.reference_curve.control_points, c.target));
+        }
     add(1, counts.closed, log.closed_loop, ours.closed);
     add(2, counts.on_surface, log.on_surface, ours.on_surface);
   }
@@ -179,6 +186,15 @@ std::string decision_table(const DecisionCounts& counts) {
   line("planar, twins", counts.twins[0]);
   line("closed, twins", counts.twins[1]);
   line("on surface, twins", counts.twins[2]);
+  if (!counts.ours_to_plane.empty()) {
+    const Distribution ours = distribution(counts.ours_to_plane), cassie = distribution(counts.cassie_to_plane);
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "planar in both (%zu): control points to our plane, median / p90: ours %.2f / %.2f mm, CASSIE's "
+                  "%.2f / %.2f mm\n",
+                  ours.count, 1000 * ours.median, 1000 * ours.p90, 1000 * cassie.median, 1000 * cassie.p90);
+    o << buf;
+  }
   return o.str();
 }
 

@@ -87,6 +87,9 @@ struct DecisionCount {
 struct DecisionCounts {
   DecisionCount planar, closed, on_surface;
   std::array<DecisionCount, 3> twins;  // the same, for mirrored twins (their twin's flags)
+  // Strokes planar in both: how closely each curve follows the plane of our
+  // E_planar term (m, plane_residual of its control points with our normal).
+  std::vector<double> ours_to_plane, cassie_to_plane;
 };
 
 // Adds every compared stroke whose log has the flag: CASSIE's `planar`
@@ -97,7 +100,8 @@ void count_decisions(const std::vector<TeacherForcedStroke>& strokes,
                      const std::map<StrokeId, CassieConstraintLog>& logs, DecisionCounts& counts);
 
 // An aligned table: decision, strokes, the four cells, agreement; a
-// decision no stroke has a flag for is left out.
+// decision no stroke has a flag for is left out. Then the median and p90 of
+// the two curves' distances to our plane.
 std::string decision_table(const DecisionCounts& counts);
 
 }  // namespace sketchlab::cli

@@ -204,6 +204,8 @@ TEST_CASE("sketchlab fidelity --cassie-logs compares CASSIE's planar and closed 
   CHECK(strokes > 50);
   CHECK(both + cassie_only + ours_only + neither == strokes);
   CHECK(r.output.find("closed  ", table) == std::string::npos);
+  CHECK(r.output.find("planar in both (" + std::to_string(both) + "): control points to our plane", table) !=
+        std::string::npos);
   // Without logs the columns are empty.
   const auto plain = test::run_captured(std::string(SKETCHLAB_CLI) + " fidelity " + rec +
                                         " --corrector cassie --param mirror=plane --csv-dir " + (dir / "plain").string());

@@ -6,16 +6,6 @@
 
 namespace sketchlab::cassie {
 
-double plane_residual(const std::vector<Vec3>& points, const Vec3& n) {
-  if (points.empty()) return 0.0;
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& p : points) c += p;
-  c /= static_cast<double>(points.size());
-  double r = 0.0;
-  for (const Vec3& p : points) r = std::max(r, std::abs((p - c).dot(n)));
-  return r;
-}
-
 PlaneFit fit_plane(const std::vector<Vec3>& points, double max_distance, double angle, bool test_snapped) {
   PlaneFit f;
   if (points.size() < 3) return f;

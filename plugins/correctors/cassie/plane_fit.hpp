@@ -3,6 +3,7 @@
 // app item 14).
 #include <vector>
 
+#include "sketchlab/geometry/plane.hpp"  // plane_residual
 #include "sketchlab/types.hpp"
 
 namespace sketchlab::cassie {
@@ -21,9 +22,5 @@ struct PlaneFit {
 // against the least-squares one (CHI 2021 §4.2 "Planarity": fit, test the
 // farthest point, then snap).
 PlaneFit fit_plane(const std::vector<Vec3>& points, double max_distance, double angle, bool test_snapped);
-
-// Largest distance of the points to the plane through their centroid with
-// unit normal n.
-double plane_residual(const std::vector<Vec3>& points, const Vec3& n);
 
 }  // namespace sketchlab::cassie
