@@ -80,8 +80,8 @@ struct CassieConstraintLog {
 
 // Reads every stroke's log from a raw_data/<session>.json, by CASSIE id.
 // Throws std::runtime_error naming the file, the element and the field for
-// malformed JSON or a missing/mistyped field (a flag must be true or false); sessions without
-// allSketchedStrokes give an empty map.
+// malformed JSON or a missing/mistyped field (a flag must be true or false);
+// sessions without allSketchedStrokes give an empty map.
 std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::filesystem::path& raw_data_json);
 
 struct GridInference {
