@@ -68,9 +68,13 @@ const char* const header_row =
     "group,sessions,strokes,compared,errors,snap_agreement_pct,snap_kind_agreement_pct,"
     "snap_recall_pct,snap_precision_pct,endpoint_median_mm,endpoint_p90_mm,mean_deviation_median_mm,"
     "mean_deviation_p90_mm,line_agreement_pct,cpu_p50_ms,cpu_p95_ms,cpu_max_ms,wall_p50_ms,wall_p95_ms,"
-    "wall_max_ms";
+    "wall_max_ms,planar_agreement_pct,closed_agreement_pct";
 
-std::string row(const std::string& name, std::size_t sessions, const TeacherForcedSummary& s) {
+// Agreement with CASSIE's flags (--cassie-logs), empty without any.
+std::string agreement(const DecisionCount& c) { return c.strokes() ? fixed(100 * c.agreement(), 1) : ""; }
+
+std::string row(const std::string& name, std::size_t sessions, const TeacherForcedSummary& s,
+                const DecisionCounts& d) {
   std::ostringstream o;
   o << name << ',' << sessions << ',' << s.strokes << ',' << s.compared << ',' << s.errors << ','
     << fixed(100 * s.snap_agreement(), 1) << ',' << fixed(100 * s.snap_kind_agreement(), 1) << ','
@@ -79,7 +83,8 @@ std::string row(const std::string& name, std::size_t sessions, const TeacherForc
     << ',' << fixed(1000 * s.mean_deviation.median, 2) << ',' << fixed(1000 * s.mean_deviation.p90, 2)
     << ',' << fixed(100 * s.line_agreement(), 1) << ',' << fixed(s.cpu_ms.median, 3) << ','
     << fixed(s.cpu_ms.p95, 3) << ',' << fixed(s.cpu_ms.max, 3) << ',' << fixed(s.latency_ms.median, 3)
-    << ',' << fixed(s.latency_ms.p95, 3) << ',' << fixed(s.latency_ms.max, 3);
+    << ',' << fixed(s.latency_ms.p95, 3) << ',' << fixed(s.latency_ms.max, 3) << ',' << agreement(d.planar) << ','
+    << agreement(d.closed);
   return o.str();
 }
 
@@ -130,7 +135,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
                 "the reference's down by the pair of snap kinds, per group (see app/fidelity_causes.hpp)");
   cmd->add_option("--cassie-logs", o->cassie_logs,
                   "CASSIE's raw_data directory: <session>.json gives the constraints CASSIE applied and "
-                  "rejected, for --causes");
+                  "rejected, for --causes, and its per-stroke flags (planar, closedLoop, onSurface), compared "
+                  "with ours in a table per group and the planar/closed agreement columns");
   cmd->add_option("--near", o->near,
                   "Distance (m) within which a constraint target is an end's, for --causes (default 0.02)");
   cmd->callback([o, &exit_code] {
@@ -153,6 +159,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, std::map<std::string, CauseCount>> causes;
     std::map<std::string, std::size_t> cause_ends;
     std::map<std::string, std::map<std::string, EndDistances>> end_distances;
+    std::map<std::string, DecisionCounts> decisions;  // by row name
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
       std::vector<TeacherForcedStroke> strokes;
@@ -164,22 +171,25 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       const std::string group = fidelity_group(rec.header);
       const std::string session = f.stem().string();
       if (!o->csv_dir.empty()) write_text_file(fs::path(o->csv_dir) / (session + ".csv"), teacher_forced_csv(strokes));
-      session_rows.push_back(row(session + " (" + group + ")", 1, summarize(strokes)));
+      const bool in_study = group == "Armature" || group == "Patch";
+      std::map<StrokeId, CassieConstraintLog> logs;
+      if (!o->cassie_logs.empty()) {
+        const auto it = rec.header.source.find("session");
+        logs = read_cassie_constraint_logs(fs::path(o->cassie_logs) /
+                                           ((it == rec.header.source.end() ? session : it->second) + ".json"));
+        add_mirrored_twin_logs(rec, logs);
+        for (const std::string& key : {session, group, std::string(in_study ? "Armature+Patch" : ""), std::string("all")})
+          if (!key.empty()) count_decisions(strokes, logs, decisions[key]);
+      }
+      session_rows.push_back(row(session + " (" + group + ")", 1, summarize(strokes), decisions[session]));
       std::cerr << session << ": " << strokes.size() << " strokes\n";
       auto& g = groups[group];
       g.insert(g.end(), strokes.begin(), strokes.end());
       ++group_sessions[group];
-      if (group == "Armature" || group == "Patch") study.insert(study.end(), strokes.begin(), strokes.end());
+      if (in_study) study.insert(study.end(), strokes.begin(), strokes.end());
       all.insert(all.end(), strokes.begin(), strokes.end());
       if (o->causes) {
-        std::map<StrokeId, CassieConstraintLog> logs;
-        if (!o->cassie_logs.empty()) {
-          const auto it = rec.header.source.find("session");
-          logs = read_cassie_constraint_logs(fs::path(o->cassie_logs) /
-                                             ((it == rec.header.source.end() ? session : it->second) + ".json"));
-          add_mirrored_twin_logs(rec, logs);
-        }
-        const std::string cg = group == "Armature" || group == "Patch" ? "Armature+Patch" : group;
+        const std::string cg = in_study ? "Armature+Patch" : group;
         count_causes(strokes, o->cassie_logs.empty() ? nullptr : &logs, o->near, causes[cg]);
         cause_ends[cg] += summarize(strokes).endpoints;
         add_end_distances(strokes, raw_stroke_ends(rec), end_distances[cg]);
@@ -187,19 +197,25 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     }
     std::vector<std::string> rows{std::string(header_row)};
     for (const char* name : {"Freehand", "Armature", "Patch", "showcase"})
-      if (groups.count(name)) rows.push_back(row(name, group_sessions[name], summarize(groups[name])));
+      if (groups.count(name)) rows.push_back(row(name, group_sessions[name], summarize(groups[name]), decisions[name]));
     for (const auto& [name, strokes] : groups)
       if (name != "Freehand" && name != "Armature" && name != "Patch" && name != "showcase")
-        rows.push_back(row(name, group_sessions[name], summarize(strokes)));
+        rows.push_back(row(name, group_sessions[name], summarize(strokes), decisions[name]));
     if (!study.empty())
-      rows.push_back(row("Armature+Patch", group_sessions["Armature"] + group_sessions["Patch"], summarize(study)));
-    rows.push_back(row("all", files.size(), summarize(all)));
+      rows.push_back(row("Armature+Patch", group_sessions["Armature"] + group_sessions["Patch"], summarize(study),
+                         decisions["Armature+Patch"]));
+    rows.push_back(row("all", files.size(), summarize(all), decisions["all"]));
     std::cout << "corrector " << o->corrector;
     for (const std::string& p : o->params) std::cout << " " << p;
     std::cout << "\n" << aligned(rows);
     for (const auto& [name, counts] : causes)
       std::cout << "\n" << name << ": " << cause_ends[name] << " ends, snap kind differs at:\n"
                 << cause_table(counts, cause_ends[name]);
+    if (!o->cassie_logs.empty())
+      for (const char* name : {"Freehand", "Armature", "Patch", "showcase", "Armature+Patch", "all"})
+        if (decisions.count(name) && decisions[name].planar.strokes() + decisions[name].closed.strokes() > 0)
+          std::cout << "\n" << name << ": CASSIE's per-stroke flags (raw_data) against our decisions:\n"
+                    << decision_table(decisions[name]);
     for (const auto& [name, d] : end_distances)
       std::cout << "\n" << name << ": distance from each of CASSIE's ends to ours, by snap kinds:\n"
                 << end_distance_table(d);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "sketchlab/geometry/plane.hpp"
 #include "sketchlab/lab/distribution.hpp"
 
 namespace sketchlab::cli {
@@ -55,8 +56,11 @@ void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, Cassi
     for (int i = 0; i < 2; ++i) {
       const auto drawn = logs.find(ids[i]);
       if (drawn == logs.end() || logs.count(ids[1 - i])) continue;
-      const CassieConstraintLog twin{reflect(drawn->second.applied), reflect(drawn->second.rejected)};
-      logs[ids[1 - i]] = twin;
+      CassieConstraintLog twin = drawn->second;  // planarity and closure are the same in a reflection
+      twin.applied = reflect(twin.applied);
+      twin.rejected = reflect(twin.rejected);
+      twin.mirrored_twin = true;
+      logs[ids[1 - i]] = std::move(twin);
     }
   }
 }
@@ -128,6 +132,70 @@ std::map<StrokeId, std::array<Vec3, 2>> raw_stroke_ends(const Recording& recordi
     if (const auto* s = std::get_if<StrokeEvent>(&e.payload); s && !s->stroke.samples.empty())
       out[s->stroke.id] = {s->stroke.samples.front().position, s->stroke.samples.back().position};
   return out;
+}
+
+StrokeDecisions output_decisions(const TeacherForcedStroke& r) {
+  StrokeDecisions d;
+  for (const Constraint& c : r.constraints) {
+    d.planar |= c.kind == ConstraintKind::planar || c.kind == ConstraintKind::axis_plane;
+    d.closed |= c.kind == ConstraintKind::closure && c.enforced;
+    d.on_surface |= c.kind == ConstraintKind::on_surface;
+  }
+  return d;
+}
+
+void count_decisions(const std::vector<TeacherForcedStroke>& strokes,
+                     const std::map<StrokeId, CassieConstraintLog>& logs, DecisionCounts& counts) {
+  for (const TeacherForcedStroke& r : strokes) {
+    const auto it = logs.find(r.stroke);
+    if (!r.compared || it == logs.end()) continue;
+    const CassieConstraintLog& log = it->second;
+    const StrokeDecisions ours = output_decisions(r);
+    // CASSIE flags no line planar (lines have no planarity term, item 17).
+    const bool bezier = !r.reference_line && !r.output_line;
+    const auto add = [&](int k, DecisionCount& c, const std::optional<bool>& cassie, bool our) {
+      if (!cassie) return;
+      DecisionCount& n = log.mirrored_twin ? counts.twins[static_cast<std::size_t>(k)] : c;
+      ++(*cassie ? (our ? n.both : n.cassie_only) : (our ? n.ours_only : n.neither));
+    };
+    if (bezier) add(0, counts.planar, log.planar, ours.planar);
+    if (bezier && !log.mirrored_twin && log.planar.value_or(false))
+      for (const Constraint& c : r.constraints)
+        if (c.kind == ConstraintKind::planar || c.kind == ConstraintKind::axis_plane) {
+          counts.ours_to_plane.push_back(plane_residual(r.output_curve.control_points, c.target));
+          counts.cassie_to_plane.push_back(plane_residual(r.reference_curve.control_points, c.target));
+        }
+    add(1, counts.closed, log.closed_loop, ours.closed);
+    add(2, counts.on_surface, log.on_surface, ours.on_surface);
+  }
+}
+
+std::string decision_table(const DecisionCounts& counts) {
+  std::ostringstream o;
+  o << "decision              strokes    both  CASSIE only  ours only  neither  agreement\n";
+  const auto line = [&](const char* name, const DecisionCount& c) {
+    if (c.strokes() == 0) return;  // the export has no such flag
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%-20s  %7zu  %6zu  %11zu  %9zu  %7zu  %7.1f %%\n", name, c.strokes(), c.both,
+                  c.cassie_only, c.ours_only, c.neither, 100 * c.agreement());
+    o << buf;
+  };
+  line("planar (Béziers)", counts.planar);
+  line("closed", counts.closed);
+  line("on surface", counts.on_surface);
+  line("planar, twins", counts.twins[0]);
+  line("closed, twins", counts.twins[1]);
+  line("on surface, twins", counts.twins[2]);
+  if (!counts.ours_to_plane.empty()) {
+    const Distribution ours = distribution(counts.ours_to_plane), cassie = distribution(counts.cassie_to_plane);
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "planar in both (%zu): control points to our plane, median / p90: ours %.2f / %.2f mm, CASSIE's "
+                  "%.2f / %.2f mm\n",
+                  ours.count, 1000 * ours.median, 1000 * ours.p90, 1000 * cassie.median, 1000 * cassie.p90);
+    o << buf;
+  }
+  return o.str();
 }
 
 std::string end_distance_table(const std::map<std::string, EndDistances>& distances) {

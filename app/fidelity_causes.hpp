@@ -70,4 +70,38 @@ std::map<StrokeId, std::array<Vec3, 2>> raw_stroke_ends(const Recording& recordi
 // distances, largest group first.
 std::string end_distance_table(const std::map<std::string, EndDistances>& distances);
 
+// Per-stroke decisions of a corrector, from the constraints it returned:
+// a planarity soft term (`planar` / `axis_plane`, item 14), an enforced
+// `closure` (item 10), an `on_surface` term (item 20).
+struct StrokeDecisions {
+  bool planar = false, closed = false, on_surface = false;
+};
+StrokeDecisions output_decisions(const TeacherForcedStroke& r);
+
+// A confusion table of one decision: CASSIE's flag (raw_data) against ours.
+struct DecisionCount {
+  std::size_t both = 0, cassie_only = 0, ours_only = 0, neither = 0;
+  std::size_t strokes() const { return both + cassie_only + ours_only + neither; }
+  double agreement() const { return strokes() ? double(both + neither) / double(strokes()) : 0.0; }
+};
+struct DecisionCounts {
+  DecisionCount planar, closed, on_surface;
+  std::array<DecisionCount, 3> twins;  // the same, for mirrored twins (their twin's flags)
+  // Strokes planar in both: how closely each curve follows the plane of our
+  // E_planar term (m, plane_residual of its control points with our normal).
+  std::vector<double> ours_to_plane, cassie_to_plane;
+};
+
+// Adds every compared stroke whose log has the flag: CASSIE's `planar`
+// against ours for strokes that are poly-Béziers in both (CASSIE flags no
+// line planar), `closedLoop` and `onSurface` for all. Strokes with a
+// mirrored twin's log count in `twins` only.
+void count_decisions(const std::vector<TeacherForcedStroke>& strokes,
+                     const std::map<StrokeId, CassieConstraintLog>& logs, DecisionCounts& counts);
+
+// An aligned table: decision, strokes, the four cells, agreement; a
+// decision no stroke has a flag for is left out. Then the median and p90 of
+// the two curves' distances to our plane.
+std::string decision_table(const DecisionCounts& counts);
+
 }  // namespace sketchlab::cli

@@ -373,6 +373,12 @@ std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::f
                          src.number(src.need(q, "z", at), at, "z")});
       }
     }
+    for (const auto& [key, flag] : {std::pair{"planar", &log.planar}, std::pair{"closedLoop", &log.closed_loop},
+                                    std::pair{"onSurface", &log.on_surface}}) {
+      if (!strokes[i].contains(key)) continue;
+      if (!strokes[i][key].is_boolean()) src.fail(where, std::string("field '") + key + "' must be true or false");
+      *flag = strokes[i][key].get<bool>();
+    }
   }
   return out;
 }

@@ -171,3 +171,45 @@ TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind di
   CHECK(missing.status != 0);
   CHECK(missing.output.find((dir / "nowhere" / "02-2-2.json").string()) != std::string::npos);
 }
+
+TEST_CASE("sketchlab fidelity --cassie-logs compares CASSIE's planar and closed flags with ours", "[app]") {
+  const fs::path dir = test::fresh_dir("fidelity_flags");
+  const std::string rec = test::source_path("data/recordings/02-2-2.jsonl");  // Patch: planar flags, no closedLoop
+  const auto r = test::run_captured(std::string(SKETCHLAB_CLI) + " fidelity " + rec +
+                                    " --corrector cassie --param mirror=plane --csv-dir " + (dir / "csv").string() +
+                                    " --cassie-logs " + test::source_path("data/cassie/raw_data"));
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const std::string summary = read_text_file(dir / "csv" / "summary.csv");
+  INFO(summary);
+  // New trailing columns; the session row has a planar agreement and no
+  // closed one (this export has no closedLoop flag).
+  CHECK(summary.rfind("group,sessions,strokes", 0) == 0);
+  CHECK(summary.find("wall_max_ms,planar_agreement_pct,closed_agreement_pct\n") != std::string::npos);
+  const std::size_t at = summary.find("\n02-2-2 (Patch),");
+  REQUIRE(at != std::string::npos);
+  std::vector<std::string> cells;
+  std::stringstream row(summary.substr(at + 1, summary.find('\n', at + 1) - at - 1) + ",");  // keeps an empty last cell
+  for (std::string x; std::getline(row, x, ',');) cells.push_back(x);
+  REQUIRE(cells.size() == 22);
+  CHECK(cells[21].empty());
+  // Measured 90.5 % (88.9 % with planarity_test=snapped).
+  CHECK(std::stod(cells[20]) >= 90.0);
+  // The table: one row per flag of the export, the cells adding up.
+  const std::size_t table = r.output.find("Patch: CASSIE's per-stroke flags (raw_data) against our decisions:");
+  REQUIRE(table != std::string::npos);
+  std::istringstream in(r.output.substr(r.output.find("planar (Béziers)", table) + std::string("planar (Béziers)").size()));
+  std::size_t strokes = 0, both = 0, cassie_only = 0, ours_only = 0, neither = 0;
+  in >> strokes >> both >> cassie_only >> ours_only >> neither;
+  CHECK(strokes > 50);
+  CHECK(both + cassie_only + ours_only + neither == strokes);
+  CHECK(r.output.find("closed  ", table) == std::string::npos);
+  CHECK(r.output.find("planar in both (" + std::to_string(both) + "): control points to our plane", table) !=
+        std::string::npos);
+  // Without logs the columns are empty.
+  const auto plain = test::run_captured(std::string(SKETCHLAB_CLI) + " fidelity " + rec +
+                                        " --corrector cassie --param mirror=plane --csv-dir " + (dir / "plain").string());
+  REQUIRE(plain.status == 0);
+  CHECK(read_text_file(dir / "plain" / "summary.csv").find("\n02-2-2 (Patch),") != std::string::npos);
+  CHECK(plain.output.find("per-stroke flags") == std::string::npos);
+}

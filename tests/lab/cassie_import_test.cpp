@@ -338,6 +338,18 @@ TEST_CASE("CASSIE's constraint logs are read per stroke from raw_data", "[record
   CHECK(s4.applied[0].isApprox(Vec3(0.125, 1.375, 0.375)));
   REQUIRE(s4.rejected.size() == 1);
   CHECK(s4.rejected[0].isApprox(Vec3(0.125, 1.35890317, 0.354969263)));
+  // Per-stroke flags: chair's export has planar and onSurface, not closedLoop.
+  std::size_t planar = 0, flagged = 0;
+  for (const auto& [id, log] : logs) {
+    flagged += log.planar.has_value() && log.on_surface.has_value() && !log.closed_loop && !log.mirrored_twin;
+    planar += log.planar.value_or(false);
+  }
+  CHECK(flagged == 174);
+  CHECK(planar == 165);
+  const auto car = read_cassie_constraint_logs(cassie_dir() / "raw_data" / "vintage_car.json");
+  std::size_t closed = 0;
+  for (const auto& [id, log] : car) closed += log.closed_loop.value_or(false);
+  CHECK(closed == 6);
 
   const std::filesystem::path dir = test::binary_path("tests/scratch/cassie_logs");
   std::filesystem::create_directories(dir);
@@ -346,4 +358,8 @@ TEST_CASE("CASSIE's constraint logs are read per stroke from raw_data", "[record
   CHECK_THROWS_WITH(read_cassie_constraint_logs(dir / "bad.json"),
                     Catch::Contains("bad.json") && Catch::Contains("appliedPositionConstraints[0]") &&
                         Catch::Contains("'y'"));
+  std::ofstream(dir / "flag.json", std::ios::trunc) << R"({"allSketchedStrokes":[{"id":3,"planar":"yes"}]})";
+  CHECK_THROWS_WITH(read_cassie_constraint_logs(dir / "flag.json"),
+                    Catch::Contains("flag.json") && Catch::Contains("allSketchedStrokes[0]") &&
+                        Catch::Contains("'planar' must be true or false"));
 }

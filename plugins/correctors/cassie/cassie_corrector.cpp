@@ -87,6 +87,7 @@ SearchSettings search_settings(const CassieParams& p, const Thresholds& th) {
   st.tangent_weight = p.tangent_weight;
   st.planarity_weight = p.planarity ? p.planarity_weight : 0.0;
   st.planar_distance = th.proximity;
+  st.planar_test_snapped = p.planarity_test == PlanarityTest::snapped;
   st.axis_angle = p.angle;
   st.min_edge = 1e-6 * th.delta;
   return st;

@@ -105,6 +105,12 @@ const ParamTable<Settings>& parameters() {
                 "E_planar multiplier, (1/(N−1))·Σ(n·e)²/|e₀|² (item 14: 1)")
           .boolean("planarity", c(&C::planarity),
                    "planarity soft constraint (item 14)")
+          .choice("planarity_test", c(&C::planarity_test),
+                  std::vector<std::pair<std::string, PlanarityTest>>{{"fitted", PlanarityTest::fitted},
+                                                                     {"snapped", PlanarityTest::snapped}},
+                  "item 14's 2δ test measures the control points against the least-squares plane, snapped to "
+                "an axis afterwards (fitted: CHI §4.2, as CASSIE's planar flags show) or against the snapped "
+                "plane (snapped)")
           .boolean("tangents", c(&C::tangents),
                    "tangent alignment soft constraints at intersections (item 14)")
           .boolean("overlap_cut", c(&C::overlap_cut),

@@ -39,6 +39,13 @@ enum class ConnectivityTotal {
   thesis,      // thesis eq. 3.12: every detected constraint
 };
 
+// Which plane item 14's 2δ planarity test measures the control points
+// against.
+enum class PlanarityTest {
+  fitted,   // the least-squares plane, snapped to an axis afterwards (CHI §4.2; CASSIE's `planar` flags)
+  snapped,  // the plane after its normal was snapped to an axis
+};
+
 struct CassieParams {
   double delta = 0.02;                   // m, δ at zoom 1 (thesis §3.2.3.1)
   double angle = std::numbers::pi / 6;   // rad, θ (thesis §3.2.3.1)
@@ -67,6 +74,7 @@ struct CassieParams {
   double tangent_weight = 2.0;           // E_tangent = w/|e₀|²·|T×e|² (item 14: 2)
   double planarity_weight = 1.0;         // E_planar multiplier (item 14: 1)
   bool planarity = true;
+  PlanarityTest planarity_test = PlanarityTest::fitted;
   bool tangents = true;
   // Stroke ends (items 9, 10, 16).
   bool overlap_cut = true;               // item 9

@@ -6,17 +6,7 @@
 
 namespace sketchlab::cassie {
 
-double plane_residual(const std::vector<Vec3>& points, const Vec3& n) {
-  if (points.empty()) return 0.0;
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& p : points) c += p;
-  c /= static_cast<double>(points.size());
-  double r = 0.0;
-  for (const Vec3& p : points) r = std::max(r, std::abs((p - c).dot(n)));
-  return r;
-}
-
-PlaneFit fit_plane(const std::vector<Vec3>& points, double max_distance, double angle) {
+PlaneFit fit_plane(const std::vector<Vec3>& points, double max_distance, double angle, bool test_snapped) {
   PlaneFit f;
   if (points.size() < 3) return f;
   for (const Vec3& p : points) f.centroid += p;
@@ -27,13 +17,14 @@ PlaneFit fit_plane(const std::vector<Vec3>& points, double max_distance, double 
   // A straight run of control points has no defined plane.
   if (!(es.eigenvalues()[1] > 1e-12 * std::max(es.eigenvalues()[2], 1e-300))) return f;
   f.normal = es.eigenvectors().col(0).normalized();
+  if (!test_snapped) f.max_distance = plane_residual(points, f.normal);
   for (int a = 0; a < 3; ++a)
     if (std::abs(f.normal[a]) >= std::cos(angle)) {
       f.axis = a;
       f.normal = Vec3::Unit(a);
       break;
     }
-  f.max_distance = plane_residual(points, f.normal);
+  if (test_snapped) f.max_distance = plane_residual(points, f.normal);
   f.planar = f.max_distance <= max_distance;
   return f;
 }

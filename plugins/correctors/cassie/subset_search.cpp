@@ -47,7 +47,7 @@ SubsetResult evaluate_subset(const Binding& b, const std::vector<Candidate>& can
     pr.tangents.push_back({last, *st.closure_tangent, st.tangent_weight});
   }
   if (st.planarity_weight > 0) {
-    const PlaneFit plane = fit_plane(placed, st.planar_distance, st.axis_angle);
+    const PlaneFit plane = fit_plane(placed, st.planar_distance, st.axis_angle, st.planar_test_snapped);
     if (plane.planar) {
       pr.plane_normal = plane.normal;
       r.plane_normal = plane.normal;

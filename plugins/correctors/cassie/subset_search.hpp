@@ -20,6 +20,7 @@ struct SearchSettings {
   double tangent_weight = 2.0;        // E_tangent multiplier (item 14)
   double planarity_weight = 1.0;      // E_planar multiplier; 0 disables planarity
   double planar_distance = 0.04;      // m: planar when every control point is this close (2δ)
+  bool planar_test_snapped = false;   // ... to the axis-snapped plane, else to the fitted one
   double axis_angle = 0.5235987755982988;  // rad: plane normal snapped to an axis within this
   double min_edge = 1e-8;             // m, see SolveProblem
   bool closure = false;               // item 10: ends joined in every subset

@@ -25,3 +25,12 @@ TEST_CASE("intersect meets the plane at any ray parameter", "[plane]") {
   CHECK((*behind - Vec3(0, -1, -2)).norm() < 1e-12);
   CHECK_FALSE(intersect(Ray{Vec3(0, 1, 0), Vec3::UnitX()}, floor));
 }
+
+TEST_CASE("plane_residual is the largest distance to the centroid's plane of that normal", "[plane]") {
+  // Centroid z = 0.25: the farthest point (z = 1) is 0.75 off the plane z = 0.25.
+  const std::vector<Vec3> pts{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 7, 1}};
+  CHECK(std::abs(plane_residual(pts, Vec3::UnitZ()) - 0.75) < 1e-15);
+  CHECK(std::abs(plane_residual(pts, -Vec3::UnitZ()) - 0.75) < 1e-15);  // orientation does not matter
+  CHECK(plane_residual({{1, 2, 3}, {4, 5, 3}}, Vec3::UnitZ()) == 0.0);
+  CHECK(plane_residual({}, Vec3::UnitZ()) == 0.0);
+}

@@ -4,6 +4,7 @@
 // (n, d) of n·x = d (Stroke::draw_plane, plane_through in draw_plane.hpp);
 // the two conversions below go between the forms.
 #include <optional>
+#include <vector>
 
 #include "sketchlab/types.hpp"
 #include "sketchlab/view.hpp"
@@ -24,5 +25,10 @@ Plane plane_from_coefficients(const Vec4& coefficients);
 // origin too); nothing when the ray is parallel to the plane
 // (|direction·normal| < 1e-12).
 std::optional<Vec3> intersect(const Ray& ray, const Plane& plane);
+
+// Largest distance (m) of `points` to the plane through their centroid with
+// unit normal `n`, 0 for no points: how far they are from lying in one plane
+// of that orientation (e.g. a curve's control points, CASSIE's planarity).
+double plane_residual(const std::vector<Vec3>& points, const Vec3& n);
 
 }  // namespace sketchlab

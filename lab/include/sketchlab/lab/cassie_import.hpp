@@ -40,6 +40,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,15 +68,20 @@ Recording import_cassie_session(const std::filesystem::path& dataset_dir,
 
 // What CASSIE logged for one stroke (raw_data allSketchedStrokes[], a point
 // or, in newer exports, an object with its position): the
-// targets of the position constraints it applied and rejected (metres).
+// targets of the position constraints it applied and rejected (metres), and
+// its per-stroke decisions where the export has them (unset otherwise):
+// `planar` (item 14's planarity applied), `closedLoop` (item 10's closure;
+// newer exports only) and `onSurface` (item 20).
 struct CassieConstraintLog {
   std::vector<Vec3> applied, rejected;
+  std::optional<bool> planar, closed_loop, on_surface;
+  bool mirrored_twin = false;  // copied from the drawn twin (CASSIE logs only that one)
 };
 
 // Reads every stroke's log from a raw_data/<session>.json, by CASSIE id.
 // Throws std::runtime_error naming the file, the element and the field for
-// malformed JSON or a missing/mistyped field; sessions without
-// allSketchedStrokes give an empty map.
+// malformed JSON or a missing/mistyped field (a flag must be true or false);
+// sessions without allSketchedStrokes give an empty map.
 std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::filesystem::path& raw_data_json);
 
 struct GridInference {

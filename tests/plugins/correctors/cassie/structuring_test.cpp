@@ -130,6 +130,27 @@ TEST_CASE("A nearly planar stroke becomes planar and snaps to an axis plane", "[
   CHECK(spread(hard.edit.curves_added[0].curve) < 1e-4 * before + 1e-6);
 }
 
+TEST_CASE("A planar stroke tilted within θ of an axis plane gets the axis plane", "[cassie]") {
+  Sketch sketch;
+  // A half circle of 20 cm in a plane tilted 25° from z = 0: in its fitted
+  // plane, but its control points span 8 cm in z, beyond 2δ of any z plane.
+  const double tilt = 25.0 * std::numbers::pi / 180;
+  auto f = [&](double u) {
+    const double a = std::numbers::pi * u;
+    return Vec3(0.2 * std::cos(a), 0.2 * std::sin(a) * std::cos(tilt), 0.2 * std::sin(a) * std::sin(tilt));
+  };
+  const Stroke s = make_stroke(3, 100, f);
+  CassieParams p;  // planarity_test = fitted (CHI §4.2)
+  const Correction fitted = correct_stroke(s, sketch, p);
+  const Constraint* k = find_kind(fitted, ConstraintKind::axis_plane);
+  REQUIRE(k);
+  CHECK((k->target - Vec3::UnitZ()).norm() < 1e-12);
+  p.planarity_test = PlanarityTest::snapped;
+  const Correction snapped = correct_stroke(s, sketch, p);
+  CHECK_FALSE(find_kind(snapped, ConstraintKind::axis_plane));
+  CHECK_FALSE(find_kind(snapped, ConstraintKind::planar));
+}
+
 TEST_CASE("A nearly closed loop closes", "[cassie]") {
   Sketch sketch;
   // 350° of a 15 cm circle: the ends are 2.6 cm apart (< 2δ = 4 cm).
