@@ -44,6 +44,7 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("guideline_angle", &A::guideline_angle, 0.0, 45.0, "deg", "guideline stroke within this angle of a vanishing direction, §2.2 (3°)", degrees)
       .real("vanishing_merge", &A::vanishing_merge, 0.0, 45.0, "deg", "a segment within this angle of a vanishing direction adds no new one, §4.1–4.2 / Fig. 11d (0.26°)", degrees)
       .real("tick_length", &A::tick_length, 0.0, 10.0, "in", "dimension ticks are shorter than this, §2.3 (0.4 in)")
+      .real("tick_reach", &A::tick_reach, 0.0, 10.0, "δ", "a tick crosses a guideline passing within this many δ beyond its ends, §3.1 eq. 3 (1)")
       .boolean("reinfer_free", &A::reinfer_free, "re-infer free strokes near new geometry, §2.1")
       .boolean("remove_hooks", &A::remove_hooks, "cut a hook (a sharp flick) at either end of a stroke before inference (not in the paper)")
       .real("hook_max_length", &A::hook_max_length, 0.001, 10.0, "in", "a hook spans at most this distance from its end (0.3 in)")

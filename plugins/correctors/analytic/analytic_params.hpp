@@ -76,6 +76,9 @@ struct AnalyticParams {
   double vanishing_merge = std::acos(0.99999);
   // Dimension ticks: straight strokes shorter than this (in) crossing a guideline.
   double tick_length = 0.4;
+  // A tick crosses a guideline whose projection passes within tick_reach·δ
+  // beyond either end (§3.1's uncertainty radius; 0 = the drawn tick only).
+  double tick_reach = 1.0;
   bool reinfer_free = true;
   // Hook removal before inference (not in the paper; kernel's
   // find_hookless_range): a turn of 45° or more within hook_max_length of an

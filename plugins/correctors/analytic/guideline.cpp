@@ -103,7 +103,14 @@ std::vector<TickTransfer> detect_tick(const Scaffold& s, const Camera& cam, cons
   const auto at_a = known_points_near(s, cam, a, p.collect_factor * stroke.delta.front());
   const auto at_b = known_points_near(s, cam, b, p.collect_factor * stroke.delta.back());
   if (!at_a.empty() && !at_b.empty() && (at_a.front() - at_b.front()).norm() > s.tolerance) return out;
-  // The guideline the tick crosses: its 2D projection separates a and b.
+  // The guideline the tick crosses: its 2D projection meets the tick within
+  // tick_reach·δ beyond either end (§3.1, eq. 3: a stroke's ends are samples
+  // within δ of the intended ones, and the guideline's projection runs from
+  // the known point it snapped to, up to 2δ from where its stroke began).
+  const double chord = (b - a).norm();
+  if (!(chord > 0)) return out;
+  const double reach_a = p.tick_reach * stroke.delta.front() / chord;
+  const double reach_b = p.tick_reach * stroke.delta.back() / chord;
   int guide = -1;
   Vec2 cross = Vec2::Zero();
   double best = 1e300;
@@ -116,8 +123,9 @@ std::vector<TickTransfer> detect_tick(const Scaffold& s, const Camera& cam, cons
     const Vec2 d = *p1 - *p0;
     auto side = [&](const Vec2& q) { return d.x() * (q.y() - p0->y()) - d.y() * (q.x() - p0->x()); };
     const double sa = side(a), sb = side(b);
-    if (sa * sb > 0) continue;
+    if (sa == sb) continue;  // parallel
     const double t = sa / (sa - sb);
+    if (!(t >= -reach_a && t <= 1.0 + reach_b)) continue;
     const Vec2 x = a + t * (b - a);
     const double along = (x - *p0).dot(d) / d.squaredNorm();
     if (along < 0 || along > 1) continue;

@@ -35,8 +35,9 @@ struct TickTransfer {
   Vec3 position = Vec3::Zero();
 };
 
-// §2.3: the tick's 3D point on the guideline it crosses (snapped to a nearby
-// scaffold point), plus the distance A to every intersecting guideline
+// §2.3: the tick's 3D point on the guideline it crosses (its projection
+// meeting the tick's line within params.tick_reach·δ beyond the tick's ends;
+// snapped to a nearby scaffold point), plus the distance A to every intersecting guideline
 // transferred as ticks at ±A along it. Empty when the stroke is no tick.
 std::vector<TickTransfer> detect_tick(const Scaffold& scaffold, const Camera& camera,
                                       const Stroke2d& stroke, const AnalyticParams& p);

@@ -71,3 +71,31 @@ TEST_CASE("a short stroke between two known points is a segment, not a tick", "[
   CHECK((l.control_points.front() - B0).norm() < 1e-9);
   CHECK((l.control_points.back() - C).norm() < 1e-9);
 }
+
+TEST_CASE("a tick stopping within δ of the guideline's projection still ticks it (§3.1 eq. 3)", "[analytic][tick]") {
+  // The tick lies wholly beside the x guideline, its near end about 4 px from
+  // the projection (δ ≥ δ_min = 9.6 px): the guideline was drawn from a known
+  // point up to 2δ off, so the user's tick over the drawn stroke can miss the
+  // inferred line's projection by that much.
+  const Vec3 across = x.cross(B1 - eye_position(view)).normalized();
+  const double px = std::tan(17.5 * std::numbers::pi / 180.0) / 500.0 * (B1 - eye_position(view)).norm();
+  for (const double reach : {1.0, 0.0}) {
+    AnalyticParams p;
+    p.tick_reach = reach;
+    Drawing d(view, p);
+    d.draw(demo::segment(B0, B1), 0.0);
+    REQUIRE(stat(d.guideline(B0, x, 0.0), "guideline") == 1);
+    REQUIRE(stat(d.guideline(B0, z, 0.0), "guideline") == 1);
+    const StepReport t = d.draw({B1 + 4.0 * px * across, B1 + 24.0 * px * across}, 0.0);
+    const std::vector<Vec3> k = ticks(d.sketch());
+    if (reach > 0) {
+      CHECK(stat(t, "tick") == 1);
+      CHECK(has(k, B1, 1e-9));
+      CHECK(has(k, B0 + 0.5 * z, 1e-9));
+      CHECK(has(k, B0 - 0.5 * z, 1e-9));
+    } else {
+      CHECK(stat(t, "tick") == 0);
+      CHECK(k.empty());
+    }
+  }
+}
