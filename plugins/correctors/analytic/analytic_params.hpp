@@ -70,6 +70,9 @@ struct AnalyticParams {
   bool ellipse_snap = true;
   // Guidelines: stroke direction within this angle of a vanishing direction.
   double guideline_angle = 3.0 * degrees;
+  // ... or its end within this many δ of the vanishing line through its
+  // known point (§3.1 eq. 3; 2 like collect_factor, seventh round).
+  double guideline_reach = 2.0;
   // A segment within this angle of an existing vanishing direction adds no
   // vanishing direction of its own (§4.2: nearly-parallel vanishing directions,
   // Fig. 11d; the paper suggests "automatic filtering").

@@ -53,7 +53,7 @@ std::optional<Guideline> detect_guideline(const Scaffold& s, const Camera& cam, 
   const Vec2 sdir = (b - *o2).normalized();
   const double end_radius = p.collect_factor * stroke.delta.back();
   std::optional<Guideline> best;
-  double best_angle = p.guideline_angle;
+  double best_angle = 1e300;
   auto test = [&](const Vec3& d3, bool image_parallel) {
     const auto vp = cam.vanishing_point(d3);
     // The image direction of +d3 at the origin. It points toward the
@@ -74,6 +74,11 @@ std::optional<Guideline> detect_guideline(const Scaffold& s, const Camera& cam, 
     // the known point to it); toward one off screen either way.
     if (vp && on_screen(cam, *vp) && (*vp - *o2).dot(sdir) < 0) return;
     const double angle = std::acos(std::min(1.0, c));
+    // Its end is a sample within δ of the intended one (§3.1, eq. 3), so a
+    // short guideline may leave its vanishing line by up to guideline_reach·δ
+    // at its end where the angle test alone would reject it.
+    const double off = std::abs(dir2.x() * (b - *o2).y() - dir2.y() * (b - *o2).x());
+    if (angle > p.guideline_angle && off > p.guideline_reach * stroke.delta.back()) return;
     if (angle > best_angle) return;
     if (!forced) {
       const bool reaches_vp = vp && on_screen(cam, *vp) && (b - *vp).norm() <= end_radius;

@@ -21,6 +21,9 @@ struct Guideline {
   bool image_parallel = false;
 };
 
+// The stroke's direction from the known point must be within
+// guideline_angle of the direction's image, or its end within
+// guideline_reach·δ (of that end) of the direction's image line.
 // `forced`: the user drew in guide mode, so the end condition is dropped.
 std::optional<Guideline> detect_guideline(const Scaffold& scaffold, const Camera& camera,
                                           const Stroke2d& stroke, const AnalyticParams& p,
