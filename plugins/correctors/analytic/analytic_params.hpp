@@ -73,6 +73,10 @@ struct AnalyticParams {
   // ... or its end within this many δ of the vanishing line through its
   // known point (§3.1 eq. 3; 2 like collect_factor, seventh round).
   double guideline_reach = 2.0;
+  // Among vanishing directions passing those tests, take the one with the
+  // best §3.1 fitness of the segment {known point, direction, free end}
+  // (eq. 3 × eq. 4) instead of the smallest angle (eighth round).
+  bool guideline_fitness = true;
   // A segment within this angle of an existing vanishing direction adds no
   // vanishing direction of its own (§4.2: nearly-parallel vanishing directions,
   // Fig. 11d; the paper suggests "automatic filtering").

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "line_inference.hpp"
+
 namespace sketchlab::analytic {
 
 namespace {
@@ -53,7 +55,19 @@ std::optional<Guideline> detect_guideline(const Scaffold& s, const Camera& cam, 
   const Vec2 sdir = (b - *o2).normalized();
   const double end_radius = p.collect_factor * stroke.delta.back();
   std::optional<Guideline> best;
-  double best_angle = 1e300;
+  double best_score = -1e300;
+  // The stroke as the segment {known point, this direction, free end} of
+  // §3.1: S (eq. 3) with the far end the point of the direction's 3D line
+  // nearest the end's ray, times G (eq. 4) without its length term (a
+  // vanishing line is a direction, §2.2: its stroke's length is arbitrary);
+  // C (eq. 5) is the same for every direction.
+  const StrokeEnd ends[2] = {{a, stroke.delta.front(), cam.ray(a)}, {b, stroke.delta.back(), cam.ray(b)}};
+  auto fitness = [&](const Vec3& d3) {
+    const LineLineHit h = closest_line_line(origin, d3, ends[1].ray.origin, ends[1].ray.direction);
+    if (h.parallel) return 0.0;
+    const std::pair<Vec3, Vec3> seg{origin, origin + h.s * d3};
+    return endpoint_score(cam, seg, ends) * (1.0 + direction_prior(s, d3, p));
+  };
   auto test = [&](const Vec3& d3, bool image_parallel) {
     const auto vp = cam.vanishing_point(d3);
     // The image direction of +d3 at the origin. It points toward the
@@ -79,13 +93,18 @@ std::optional<Guideline> detect_guideline(const Scaffold& s, const Camera& cam, 
     // at its end where the angle test alone would reject it.
     const double off = std::abs(dir2.x() * (b - *o2).y() - dir2.y() * (b - *o2).x());
     if (angle > p.guideline_angle && off > p.guideline_reach * stroke.delta.back()) return;
-    if (angle > best_angle) return;
+    // Among directions that pass, the smallest angle (choice), or with
+    // guideline_fitness the best F = S·G (§3.1): directions whose images
+    // nearly coincide at the known point are told apart by how many segments
+    // already run along them (eq. 4) rather than by the pen's error.
+    const double score = p.guideline_fitness ? fitness(oriented) : -angle;
+    if (score < best_score) return;
     if (!forced) {
       const bool reaches_vp = vp && on_screen(cam, *vp) && (b - *vp).norm() <= end_radius;
       const bool reaches_edge = (!vp || !on_screen(cam, *vp)) && border_distance(cam, b) <= end_radius;
       if (!reaches_vp && !reaches_edge) return;
     }
-    best_angle = angle;
+    best_score = score;
     best = Guideline{origin, oriented.normalized(), image_parallel};
   };
   for (const Vec3& d : s.vanishing) test(d, false);

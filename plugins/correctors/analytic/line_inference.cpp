@@ -296,19 +296,26 @@ double endpoint_score(const Camera& cam, const std::pair<Vec3, Vec3>& seg, const
   return gauss((*a - ends[0].pixel).norm(), ends[0].delta) * gauss((*b - ends[1].pixel).norm(), ends[1].delta);
 }
 
+double direction_prior(const Scaffold& s, const Vec3& d, const AnalyticParams& p) {
+  int n = 0;
+  for (const auto& [e, k] : s.direction_classes) n += k;
+  if (n == 0) return 0.0;
+  const double r_d = 1.0 - std::cos(p.direction_spread);
+  double gd = 0.0;
+  // Directions are unsigned: |d·d_j|.
+  for (const auto& [e, k] : s.direction_classes) gd += k * gauss(1.0 - std::abs(d.dot(e)), r_d);
+  return gd / n;
+}
+
 double geometry_prior(const Scaffold& s, const std::pair<Vec3, Vec3>& seg, const AnalyticParams& p) {
   int n = 0;
   for (const auto& [l, k] : s.length_classes) n += k;
   if (n == 0) return 1.0;
   const double r_l = s.length_sum / n;
-  const double r_d = 1.0 - std::cos(p.direction_spread);
   const double len = (seg.second - seg.first).norm();
-  const Vec3 d = (seg.second - seg.first) / len;
-  double gl = 0.0, gd = 0.0;
+  double gl = 0.0;
   for (const auto& [l, k] : s.length_classes) gl += k * gauss(len - l, r_l);
-  // Directions are unsigned: |d·d_j|.
-  for (const auto& [e, k] : s.direction_classes) gd += k * gauss(1.0 - std::abs(d.dot(e)), r_d);
-  return 1.0 + gl / n + gd / n;
+  return 1.0 + gl / n + direction_prior(s, (seg.second - seg.first) / len, p);
 }
 
 namespace {

@@ -77,6 +77,9 @@ std::optional<std::pair<Vec3, Vec3>> evaluate_triplet(const Triplet& t, const Li
 
 // Eq. 3: product of Gaussians of the projected-endpoint distances.
 double endpoint_score(const Camera& camera, const std::pair<Vec3, Vec3>& seg, const StrokeEnd ends[2]);
+// Eq. 4's direction term: mean direction Gaussian over the scaffold's
+// segments (0 with none); `direction` unit, unsigned.
+double direction_prior(const Scaffold& scaffold, const Vec3& direction, const AnalyticParams& p);
 // Eq. 4: 1 + mean length Gaussian + mean direction Gaussian over the scaffold's segments.
 double geometry_prior(const Scaffold& scaffold, const std::pair<Vec3, Vec3>& seg,
                       const AnalyticParams& p);

@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "drawing.hpp"
+#include "guideline.hpp"
+#include "scaffold.hpp"
 
 using namespace sketchlab;
 using namespace sketchlab::analytic;
@@ -49,4 +51,52 @@ TEST_CASE("a short guideline ending within δ of its vanishing line is one with 
       CHECK(d.added_by(g.id).empty());
     }
   }
+}
+
+TEST_CASE("guideline_fitness: of two directions nearly along the stroke, eq. 3 × eq. 4 picks the one segments share",
+          "[analytic][guideline]") {
+  const View view = demo::tablet_view(Vec3(1.2, 1.4, 2.6), Vec3(0.0, 0.1, 0.0));
+  const Camera cam(view);
+  const Vec3 x = Vec3::UnitX();
+  const Vec3 O(0.3, 0.0, 0.0);  // the end of the first segment: a known point
+  const Vec3 ray = (O - eye_position(view)).normalized();
+  // A direction whose image line through O is about 1° off x's: x plus a
+  // component along O's view ray (same image line) tilted out of that plane.
+  const Vec3 d2 = (x + 0.5 * ray + 0.02 * x.cross(ray).normalized()).normalized();
+  Sketch sketch;
+  demo::add_curve(sketch, make_line(Vec3(0, 0, 0), O), Layer::scaffold);  // ground plane: x, z, up
+  for (const double z : {0.15, 0.3, 0.45})  // three more segments along x
+    demo::add_curve(sketch, make_line(Vec3(0, 0, z), Vec3(0.3, 0, z)), Layer::scaffold);
+  demo::add_curve(sketch, make_line(Vec3(-0.3, 0, -0.3), Vec3(-0.3, 0, -0.3) + 0.2 * d2), Layer::scaffold);
+  const Scaffold s = build_scaffold(sketch.network, Vec3::UnitY(), AnalyticParams{}.vanishing_merge);
+
+  // The stroke: 150 px from O exactly along d2's image line.
+  const Vec2 o = world_to_pixel(view, O).head<2>();
+  double t = 0.0;
+  while ((world_to_pixel(view, O + t * d2).head<2>() - o).norm() < 150.0) t += 1e-4;
+  Stroke2d stroke;
+  for (int i = 0; i <= 10; ++i) stroke.points.push_back(world_to_pixel(view, O + 0.1 * i * t * d2).head<2>());
+  stroke.delta.assign(stroke.points.size(), 0.1 * view.dpi);  // δ_min
+  stroke.length = (stroke.points.back() - o).norm();
+  const Vec2 along_x = world_to_pixel(view, O + 1e-3 * x).head<2>() - o;
+  const double angle =
+      std::acos(along_x.normalized().dot((stroke.points.back() - o).normalized())) * 180.0 / std::numbers::pi;
+  REQUIRE(angle > 0.3);  // x passes the 3° test too, with its end off its line
+  REQUIRE(angle < 3.0);
+
+  // The smallest angle: d2, which the stroke follows exactly.
+  AnalyticParams by_angle;
+  by_angle.guideline_fitness = false;
+  const auto g_angle = detect_guideline(s, cam, stroke, by_angle, true);
+  REQUIRE(g_angle);
+  CHECK((g_angle->origin - O).norm() < 1e-9);
+  CHECK(g_angle->direction.dot(d2) > 1.0 - 1e-12);
+
+  // F = S·G (§3.1): S(x) = exp(−(off/δ)²) > 0.9 with off = 150 px·sin(angle),
+  // G(x) = 1 + 4/5 against G(d2) = 1 + 1/5 (eq. 4's direction term).
+  const auto g_fit = detect_guideline(s, cam, stroke, AnalyticParams{}, true);
+  REQUIRE(g_fit);
+  CHECK((g_fit->origin - O).norm() < 1e-9);
+  CHECK(g_fit->direction.dot(x) > 1.0 - 1e-12);
+  CHECK_FALSE(g_fit->image_parallel);
 }
