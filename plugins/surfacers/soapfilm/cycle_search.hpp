@@ -14,8 +14,38 @@
 
 namespace sketchlab::soapfilm {
 
+// Item 24's "closes when it returns into the start segment" read three ways
+// (README.md, twelfth round): the turn takes the start half-edge again (the
+// default); the turn takes the start segment either way (back along it from
+// its far end: the segments walked, open at the start node, are the cycle);
+// or the walk arrives back at the start node (whatever the turn there takes).
+enum class CloseRule { into_start, into_start_segment, at_start_node };
+
+// Item 25's "seeds from broken cycles first": which segments of a broken
+// patch are searched first (README.md, twelfth round): one (its first
+// piece's), all of them, or the cycle's segments at the node the breaking
+// segment leaves.
+enum class BrokenSeeds { one, all, at_break };
+
 struct CycleSearchParams {
   NodeFrameParams frame;
+  CloseRule close_rule = CloseRule::into_start;
+  // Item 24 at a sharp node: the candidates (projection >= sharp_projection)
+  // are ordered clockwise around the transported normal (the default), or,
+  // set, in the node's own order (item 23: around its fitted normal) oriented
+  // by the flip test (transported · node normal < 0 reverses it).
+  bool sharp_node_order = false;
+  BrokenSeeds broken_seeds = BrokenSeeds::one;
+  // Item 25's "two walks per new segment, from one end": the walk leaves the
+  // start node along the segment (the default), or, set, begins by turning
+  // at the start node with its own normal (the segment as the arrival) and
+  // closes at the other end.
+  bool start_turn = false;
+  // Item 22 ("a closed stroke is one node with its segment attached
+  // twice"): its seam node stays a graph node when other curves split it
+  // (CurveGraph), as in CASSIE's exported graphs. Off: it makes more extra
+  // patches than it matches (README.md, twelfth round).
+  bool closed_seam_nodes = false;
   // Thesis §3.3.2.2 "Trim curves", item 24: when the transported normal and
   // the node normal are more than this apart (as lines, rad) the turn is
   // chosen in the plane of the transported normal. The app: π/3 (|cos| <
@@ -136,6 +166,7 @@ class CycleSearcher {
   CycleSearchParams params_;
   std::map<NodeId, NodeFrame> frames_;
   int walks_ = 0;
+  bool skip_transport_ = false;  // the next turn takes the walk's normal as carried to its node
 };
 
 // Index of the first of `candidates` in clockwise order around `normal`
