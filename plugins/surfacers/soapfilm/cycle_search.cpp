@@ -89,15 +89,16 @@ const NodeFrame& CycleSearcher::frame(NodeId node) {
   return frames_.emplace(node, fit_node_frame(tangents, opposite, params_.frame)).first->second;
 }
 
-std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival, const HalfEdge* forced) {
+std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival, const HalfEdge* forced,
+                                            bool carried) {
   const NodeId b = graph_->to(in);
   const std::vector<HalfEdge> outs = graph_->outgoing(b);
   if (outs.size() < 2) return std::nullopt;  // a dangling end (item 24)
   // Carry the normal to b along the segment (Bishop frame).
   const int n = std::max(2, static_cast<int>(std::ceil(graph_->span(in.segment) * params_.transport_steps)) + 1);
-  const Vec3 transported = skip_transport_ ? Vec3(normal.normalized()) :
-      parallel_transport(graph_->curve_of(in), graph_->parameters(in, n), in.forward, normal).normalized();
-  skip_transport_ = false;
+  const Vec3 transported =
+      carried ? Vec3(normal.normalized())
+              : parallel_transport(graph_->curve_of(in), graph_->parameters(in, n), in.forward, normal).normalized();
   if (arrival) *arrival = transported;
   std::vector<HalfEdge> cands;
   std::vector<Leaving> dirs;
@@ -181,7 +182,8 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
   return cands[static_cast<std::size_t>(pick)];
 }
 
-std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, WalkTrace* trace) {
+std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, WalkTrace* trace,
+                                         bool normal_at_end) {
   ++walks_;
   if (trace) *trace = {{start}, {}};
   if (is_loop(graph_->segment(start.segment))) return Cycle{start};
@@ -190,12 +192,14 @@ std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_norma
   Vec3 normal = start_normal;
   Vec3 normal_sum = start_normal.normalized();
   HalfEdge cur = start;
+  bool carried = normal_at_end;  // the first turn's normal is given at its node
   while (true) {
     check_budget();  // issue 17: the per-event time budget
     if (params_.close_rule == CloseRule::at_start_node && cycle.size() >= 2 && graph_->to(cur) == graph_->from(start))
       return cycle;
     Vec3 arrival = Vec3::Zero();
-    const auto next = turn(cur, normal, trace ? &arrival : nullptr);
+    const auto next = turn(cur, normal, trace ? &arrival : nullptr, nullptr, carried);
+    carried = false;
     if (trace) trace->arrivals.push_back(arrival);
     if (!next) return std::nullopt;
     if (trace && !(*next == start)) trace->steps.push_back(*next);
@@ -253,8 +257,7 @@ std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<WalkTr
   const NodeFrame& f = from1 ? f1 : f0;
   if (!f.defined) return out;
   for (const Vec3& n : {Vec3(f.normal), Vec3(-f.normal)}) {
-    skip_transport_ = params_.start_turn;
-    if (auto c = walk(start, n, t)) out.push_back(std::move(*c));
+    if (auto c = walk(start, n, t, params_.start_turn)) out.push_back(std::move(*c));
     if (traces) traces->push_back(trace);
   }
   return out;

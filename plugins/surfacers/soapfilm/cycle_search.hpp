@@ -123,9 +123,13 @@ class CycleSearcher {
   // 24): at each node the next segment as in turn(); the walk fails at a node
   // with fewer than 2 segments or on a segment already in the cycle, and
   // closes when it turns back into `start` with at least 2 segments. A loop
-  // segment is a cycle by itself. Nodes may be revisited.
-  // `trace`, when given, receives what the walk did (WalkTrace).
-  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, WalkTrace* trace = nullptr);
+  // segment is a cycle by itself (other closing rules: close_rule). Nodes may
+  // be revisited.
+  // `trace`, when given, receives what the walk did (WalkTrace). With
+  // `normal_at_end`, `normal` is the one at to(start), where the first turn
+  // takes it as it is (CycleSearchParams::start_turn).
+  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, WalkTrace* trace = nullptr,
+                            bool normal_at_end = false);
 
   // The two walks of a segment (item 25), one with each orientation of the
   // normal at its start node: node0, unless node0 is sharp (or has no
@@ -159,14 +163,15 @@ class CycleSearcher {
   // Updates `normal` to the oriented normal leaving the node; `arrival`,
   // when given, receives the normal carried to the node.
   // With `forced` (a half-edge leaving that node) the turn takes it instead
-  // of its own choice and carries the normal accordingly.
-  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr, const HalfEdge* forced = nullptr);
+  // of its own choice and carries the normal accordingly. With `carried`,
+  // `normal` is already the one at to(in) (not transported along `in`).
+  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr, const HalfEdge* forced = nullptr,
+                               bool carried = false);
 
   CurveGraph* graph_;
   CycleSearchParams params_;
   std::map<NodeId, NodeFrame> frames_;
   int walks_ = 0;
-  bool skip_transport_ = false;  // the next turn takes the walk's normal as carried to its node
 };
 
 // Index of the first of `candidates` in clockwise order around `normal`
