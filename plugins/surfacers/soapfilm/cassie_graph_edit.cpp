@@ -23,7 +23,8 @@ struct Meeting {
 // network as it was.
 class Overlay {
  public:
-  explicit Overlay(const Network& network) : network_(&network), next_node_(network.next_node_id()) {}
+  Overlay(const Network& network, bool closed_seam_nodes)
+      : network_(&network), next_node_(network.next_node_id()), closed_seam_nodes_(closed_seam_nodes) {}
 
   // Alive curves within `distance` of p: the network's and the edit's own.
   std::vector<CurveHit> curves_near(const Vec3& p, double distance) const {
@@ -51,7 +52,7 @@ class Overlay {
       const double d = (n.position - p).norm();
       if (d <= r && d < best_d && on_curve(n, curve)) best = n.id, best_d = d;
     };
-    const CurveGraph graph(*network_);
+    const CurveGraph graph(*network_, closed_seam_nodes_);
     for (const NodeHit& h : network_->nodes_near(p, r))
       if (!nodes_.count(h.node) && (left_over || graph.is_graph_node(h.node)))
         consider(*network_->find_node(h.node));
@@ -87,6 +88,7 @@ class Overlay {
   std::vector<NetworkCurve> added_;
   std::map<NodeId, Node> nodes_;  // new ones (ids >= the network's next) and changed copies
   NodeId next_node_;
+  bool closed_seam_nodes_;
 };
 
 // Where the new curve meets alive curves within `distance` (see the
@@ -151,24 +153,29 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
       if (!Overlay::on_curve(n, m.old)) n.incidences.push_back({m.old, m.t_old});
       continue;
     }
-    // 1. A node of the old curve within δ of the meeting point.
-    if (const NodeId old_node = overlay.node_on(m.old, m.point, params.reuse_old * delta, params.reuse_left_over)) {
+    // 1. A node already on the new curve within 0.5δ; 2. a node of the old
+    // curve within δ of the meeting point (item 22 names the new stroke
+    // first; with reuse_new_first unset, the old curve's node comes first).
+    const auto reuse_mine = [&] {
+      NodeId mine = 0;
+      double best = params.reuse_new * delta;
+      for (const auto& [id, p] : on_new)
+        if ((p - m.point).norm() <= best) best = (p - m.point).norm(), mine = id;
+      if (!mine) return false;
+      Node& n = overlay.node(mine);
+      if (!Overlay::on_curve(n, m.old)) n.incidences.push_back({m.old, m.t_old});
+      return true;
+    };
+    const auto reuse_old = [&] {
+      const NodeId old_node = overlay.node_on(m.old, m.point, params.reuse_old * delta, params.reuse_left_over);
+      if (!old_node) return false;
       Node& n = overlay.node(old_node);
       if (!has_incidence(n, c, t)) n.incidences.push_back({c, t});
       if (std::none_of(on_new.begin(), on_new.end(), [&](const auto& p) { return p.first == old_node; }))
         on_new.emplace_back(old_node, n.position);
-      continue;
-    }
-    // 2. A node already on the new curve within 0.5δ.
-    NodeId mine = 0;
-    double best = params.reuse_new * delta;
-    for (const auto& [id, p] : on_new)
-      if ((p - m.point).norm() <= best) best = (p - m.point).norm(), mine = id;
-    if (mine) {
-      Node& n = overlay.node(mine);
-      if (!Overlay::on_curve(n, m.old)) n.incidences.push_back({m.old, m.t_old});
-      continue;
-    }
+      return true;
+    };
+    if (params.reuse_new_first ? reuse_mine() || reuse_old() : reuse_old() || reuse_mine()) continue;
     // 3. A new node splitting the old curve.
     Node& n = overlay.new_node(m.point);
     n.incidences = {{c, t}, {m.old, m.t_old}};
@@ -194,7 +201,7 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
 
 Edit cassie_graph_edit(const Network& network, const std::vector<CassieCurve>& curves,
                        const CassieGraphParams& params) {
-  Overlay overlay(network);
+  Overlay overlay(network, params.closed_seam_nodes);
   for (const CassieCurve& c : curves) add_curve(overlay, c, params);
   return overlay.edit();
 }

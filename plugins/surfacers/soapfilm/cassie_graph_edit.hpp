@@ -1,8 +1,8 @@
 #pragma once
 // CASSIE's curve graph, rebuilt while its own curves are replayed (CASSIE
 // app, item 22): every stroke end is a node; where the new curve meets an
-// alive curve it reuses a node of the old curve within δ, else a node of the
-// new curve within 0.5δ, else a new node splits the old curve; a closed
+// alive curve it reuses a node of the new curve within 0.5δ, else a node of
+// the old curve within δ, else a new node splits the old curve; a closed
 // stroke is one node. CASSIE splits a Bézier stroke at each intersection it
 // enforced (item 12), so the intersections of a replayed Bézier curve are its
 // joints lying on an alive curve; a line is not split (item 17) and meets a
@@ -26,6 +26,14 @@ struct CassieGraphParams {
   double line_meets = 0.2;   // ×δ: a line meets a curve passing this close (item 17)
   double reuse_old = 1.0;    // ×δ: reuse a node of the old curve this close (item 22)
   double reuse_new = 0.5;    // ×δ: reuse a node of the new curve this close (item 22)
+  // Item 22 ("reuses a node within 0.5δ on the new stroke, within δ on the
+  // old one"): where both exist, the new stroke's node is reused (as its
+  // ends are: an end with a node of the new curve within 0.5δ gets no other);
+  // unset, the old curve's (before the twelfth round; README.md).
+  bool reuse_new_first = true;
+  // A closed curve's seam stays a graph node when other curves split it
+  // (CurveGraph's closed_seam_nodes; set from the surfacer's parameter).
+  bool closed_seam_nodes = false;
   // Reuse also a node only a deleted curve made, left on an old curve as one
   // incidence inside it (not a graph node: curve_graph.hpp). Off, as CASSIE's
   // graph: its exported final graphs have a node where the curves meet, not

@@ -250,7 +250,9 @@ ReplayResult replay_cassie_session(const CassieSession& session, const SoapfilmP
 
   auto surfacer = std::make_shared<TimedSoapfilm>(params);
   Curves curves;
-  auto corrector = std::make_shared<CassieCurves>(session, options.graph, curves);
+  CassieGraphParams graph_params = options.graph;
+  graph_params.closed_seam_nodes = params.search.closed_seam_nodes;
+  auto corrector = std::make_shared<CassieCurves>(session, graph_params, curves);
   Session live(Workspace{}, corrector, surfacer);
   std::map<PatchId, StrokeSet> ours;          // our alive patches -> strokes
   std::map<PatchId, bool> automatic;

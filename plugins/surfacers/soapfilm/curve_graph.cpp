@@ -36,7 +36,9 @@ bool CurveGraph::is_graph_node(NodeId id) const {
     if (inc.curve != first.curve || !same_t(nc->curve, inc.t, first.t)) return true;
   // One curve passing through: a graph node only at an open curve's end.
   const Curve& c = nc->curve;
-  return !c.closed && (first.t <= t_eps || first.t >= c.t_max() - t_eps);
+  // A closed curve's seam, with closed_seam_nodes.
+  const bool at_end = first.t <= t_eps || first.t >= c.t_max() - t_eps;
+  return at_end && (!c.closed || closed_seam_nodes_);
 }
 
 const std::vector<int>& CurveGraph::segments_of(CurveId curve) {

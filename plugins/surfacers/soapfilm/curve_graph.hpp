@@ -34,7 +34,12 @@ struct HalfEdge {
 
 class CurveGraph {
  public:
-  explicit CurveGraph(const Network& network) : network_(&network) {}
+  // `closed_seam_nodes`: a closed curve's node at t = 0 stays a graph node
+  // when other curves split the curve (CASSIE app, item 22: "a closed stroke
+  // is one node", which its split keeps as a two-segment node; README.md,
+  // twelfth round); unset, such a node is not a graph node.
+  explicit CurveGraph(const Network& network, bool closed_seam_nodes = false)
+      : network_(&network), closed_seam_nodes_(closed_seam_nodes) {}
 
   const Network& network() const { return *network_; }
 
@@ -78,6 +83,7 @@ class CurveGraph {
 
  private:
   const Network* network_;
+  bool closed_seam_nodes_ = false;
   std::vector<GraphSegment> segments_;
   std::map<CurveId, std::vector<int>> by_curve_;
 };

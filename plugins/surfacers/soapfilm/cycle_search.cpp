@@ -89,14 +89,16 @@ const NodeFrame& CycleSearcher::frame(NodeId node) {
   return frames_.emplace(node, fit_node_frame(tangents, opposite, params_.frame)).first->second;
 }
 
-std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival, const HalfEdge* forced) {
+std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arrival, const HalfEdge* forced,
+                                            bool carried) {
   const NodeId b = graph_->to(in);
   const std::vector<HalfEdge> outs = graph_->outgoing(b);
   if (outs.size() < 2) return std::nullopt;  // a dangling end (item 24)
   // Carry the normal to b along the segment (Bishop frame).
   const int n = std::max(2, static_cast<int>(std::ceil(graph_->span(in.segment) * params_.transport_steps)) + 1);
   const Vec3 transported =
-      parallel_transport(graph_->curve_of(in), graph_->parameters(in, n), in.forward, normal).normalized();
+      carried ? Vec3(normal.normalized())
+              : parallel_transport(graph_->curve_of(in), graph_->parameters(in, n), in.forward, normal).normalized();
   if (arrival) *arrival = transported;
   std::vector<HalfEdge> cands;
   std::vector<Leaving> dirs;
@@ -138,7 +140,11 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
     if (kept.empty()) kept.push_back(closest);
     std::vector<Leaving> kept_dirs;
     for (std::size_t i : kept) kept_dirs.push_back(dirs[i]);
-    const int pick = next_clockwise(transported, incoming, kept_dirs, params_.tie_cos);
+    // Item 23's order is around the node's normal; item 24's flip orients it.
+    const Vec3 around = params_.sharp_node_order && f.defined
+                            ? (f.normal.dot(transported) < 0.0 ? Vec3(-f.normal) : f.normal)
+                            : transported;
+    const int pick = next_clockwise(around, incoming, kept_dirs, params_.tie_cos);
     if (pick < 0 && !forced) return std::nullopt;
     const std::size_t chosen = forced ? static_cast<std::size_t>(forced_at) : kept[static_cast<std::size_t>(pick)];
     normal = Eigen::Quaterniond::FromTwoVectors(-incoming.tangent, dirs[chosen].tangent) * transported;
@@ -176,7 +182,8 @@ std::optional<HalfEdge> CycleSearcher::turn(HalfEdge in, Vec3& normal, Vec3* arr
   return cands[static_cast<std::size_t>(pick)];
 }
 
-std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, WalkTrace* trace) {
+std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_normal, WalkTrace* trace,
+                                         bool normal_at_end) {
   ++walks_;
   if (trace) *trace = {{start}, {}};
   if (is_loop(graph_->segment(start.segment))) return Cycle{start};
@@ -185,16 +192,24 @@ std::optional<Cycle> CycleSearcher::walk(HalfEdge start, const Vec3& start_norma
   Vec3 normal = start_normal;
   Vec3 normal_sum = start_normal.normalized();
   HalfEdge cur = start;
+  bool carried = normal_at_end;  // the first turn's normal is given at its node
   while (true) {
     check_budget();  // issue 17: the per-event time budget
+    if (params_.close_rule == CloseRule::at_start_node && cycle.size() >= 2 && graph_->to(cur) == graph_->from(start))
+      return cycle;
     Vec3 arrival = Vec3::Zero();
-    const auto next = turn(cur, normal, trace ? &arrival : nullptr);
+    const auto next = turn(cur, normal, trace ? &arrival : nullptr, nullptr, carried);
+    carried = false;
     if (trace) trace->arrivals.push_back(arrival);
     if (!next) return std::nullopt;
     if (trace && !(*next == start)) trace->steps.push_back(*next);
     if (*next == start) {
       if (cycle.size() < 2) return std::nullopt;
       if (params_.reject_outer && winds_clockwise(cycle, normal_sum)) return std::nullopt;
+      return cycle;
+    }
+    if (params_.close_rule == CloseRule::into_start_segment && next->segment == start.segment) {
+      if (cycle.size() < 2) return std::nullopt;
       return cycle;
     }
     if (!used.insert(next->segment).second) return std::nullopt;
@@ -237,11 +252,12 @@ std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<WalkTr
   const NodeFrame f1 = frame(g.node1);
   const bool smooth0 = f0.defined && !f0.sharp, smooth1 = f1.defined && !f1.sharp;
   const bool from1 = (!smooth0 && smooth1) || (!f0.defined && f1.defined);
-  const HalfEdge start{segment, !from1};
+  // start_turn: the first turn is at the start node, with its normal as is.
+  const HalfEdge start{segment, params_.start_turn ? from1 : !from1};
   const NodeFrame& f = from1 ? f1 : f0;
   if (!f.defined) return out;
   for (const Vec3& n : {Vec3(f.normal), Vec3(-f.normal)}) {
-    if (auto c = walk(start, n, t)) out.push_back(std::move(*c));
+    if (auto c = walk(start, n, t, params_.start_turn)) out.push_back(std::move(*c));
     if (traces) traces->push_back(trace);
   }
   return out;

@@ -14,8 +14,38 @@
 
 namespace sketchlab::soapfilm {
 
+// Item 24's "closes when it returns into the start segment" read three ways
+// (README.md, twelfth round): the turn takes the start half-edge again (the
+// default); the turn takes the start segment either way (back along it from
+// its far end: the segments walked, open at the start node, are the cycle);
+// or the walk arrives back at the start node (whatever the turn there takes).
+enum class CloseRule { into_start, into_start_segment, at_start_node };
+
+// Item 25's "seeds from broken cycles first": which segments of a broken
+// patch are searched first (README.md, twelfth round): one (its first
+// piece's), all of them, or the cycle's segments at the node the breaking
+// segment leaves.
+enum class BrokenSeeds { one, all, at_break };
+
 struct CycleSearchParams {
   NodeFrameParams frame;
+  CloseRule close_rule = CloseRule::into_start;
+  // Item 24 at a sharp node: the candidates (projection >= sharp_projection)
+  // are ordered clockwise around the transported normal (the default), or,
+  // set, in the node's own order (item 23: around its fitted normal) oriented
+  // by the flip test (transported · node normal < 0 reverses it).
+  bool sharp_node_order = false;
+  BrokenSeeds broken_seeds = BrokenSeeds::one;
+  // Item 25's "two walks per new segment, from one end": the walk leaves the
+  // start node along the segment (the default), or, set, begins by turning
+  // at the start node with its own normal (the segment as the arrival) and
+  // closes at the other end.
+  bool start_turn = false;
+  // Item 22 ("a closed stroke is one node with its segment attached
+  // twice"): its seam node stays a graph node when other curves split it
+  // (CurveGraph), as in CASSIE's exported graphs. Off: it makes more extra
+  // patches than it matches (README.md, twelfth round).
+  bool closed_seam_nodes = false;
   // Thesis §3.3.2.2 "Trim curves", item 24: when the transported normal and
   // the node normal are more than this apart (as lines, rad) the turn is
   // chosen in the plane of the transported normal. The app: π/3 (|cos| <
@@ -93,9 +123,13 @@ class CycleSearcher {
   // 24): at each node the next segment as in turn(); the walk fails at a node
   // with fewer than 2 segments or on a segment already in the cycle, and
   // closes when it turns back into `start` with at least 2 segments. A loop
-  // segment is a cycle by itself. Nodes may be revisited.
-  // `trace`, when given, receives what the walk did (WalkTrace).
-  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, WalkTrace* trace = nullptr);
+  // segment is a cycle by itself (other closing rules: close_rule). Nodes may
+  // be revisited.
+  // `trace`, when given, receives what the walk did (WalkTrace). With
+  // `normal_at_end`, `normal` is the one at to(start), where the first turn
+  // takes it as it is (CycleSearchParams::start_turn).
+  std::optional<Cycle> walk(HalfEdge start, const Vec3& normal, WalkTrace* trace = nullptr,
+                            bool normal_at_end = false);
 
   // The two walks of a segment (item 25), one with each orientation of the
   // normal at its start node: node0, unless node0 is sharp (or has no
@@ -129,8 +163,10 @@ class CycleSearcher {
   // Updates `normal` to the oriented normal leaving the node; `arrival`,
   // when given, receives the normal carried to the node.
   // With `forced` (a half-edge leaving that node) the turn takes it instead
-  // of its own choice and carries the normal accordingly.
-  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr, const HalfEdge* forced = nullptr);
+  // of its own choice and carries the normal accordingly. With `carried`,
+  // `normal` is already the one at to(in) (not transported along `in`).
+  std::optional<HalfEdge> turn(HalfEdge in, Vec3& normal, Vec3* arrival = nullptr, const HalfEdge* forced = nullptr,
+                               bool carried = false);
 
   CurveGraph* graph_;
   CycleSearchParams params_;

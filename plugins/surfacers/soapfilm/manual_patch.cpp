@@ -5,6 +5,7 @@
 #include <set>
 
 #include "curve_graph.hpp"
+#include "patch_upkeep.hpp"
 #include "sketchlab/geometry/bezier.hpp"
 
 namespace sketchlab::soapfilm {
@@ -27,25 +28,43 @@ double segment_distance(const CurveGraph& graph, HalfEdge h, const Vec3& p) {
   return best;
 }
 
-std::optional<std::vector<OrientedSegment>> walk_towards(CurveGraph& graph, HalfEdge start,
-                                                         const Vec3& p, int max_segments) {
+// Whether graph segment s already bounds two patches (item 26: manifold
+// first).
+bool full(CurveGraph& graph, int s) {
+  int count = 0;
+  for (PatchId id : graph.network().patches_on(graph.segment(s).curve)) {
+    const std::vector<int> key = boundary_key(graph, graph.network().patches().at(id).boundary);
+    count += std::binary_search(key.begin(), key.end(), s);
+  }
+  return count >= 2;
+}
+
+std::optional<std::vector<OrientedSegment>> walk_towards(CurveGraph& graph, HalfEdge start, const Vec3& p,
+                                                         const ManualPatchParams& params) {
   const NodeId a = graph.from(start);
   std::vector<OrientedSegment> cycle{graph.oriented(start)};
   std::set<NodeId> visited{a};
   std::set<int> used{start.segment};
   HalfEdge cur = start;
+  int turns = 0;
   while (true) {
     const NodeId b = graph.to(cur);
     if (b == a) return cycle;
-    if (!visited.insert(b).second || static_cast<int>(cycle.size()) >= max_segments) return std::nullopt;
+    if (!visited.insert(b).second || static_cast<int>(cycle.size()) >= params.max_segments) return std::nullopt;
     std::optional<HalfEdge> best;
     double best_d = INFINITY;
+    bool best_full = true;
     for (const HalfEdge& h : graph.outgoing(b)) {
       if (h == cur.reversed() || used.count(h.segment)) continue;
       const double d = segment_distance(graph, h, p);
-      if (d < best_d) best_d = d, best = h;
+      const bool f = params.manifold_first && full(graph, h.segment);
+      if (!best || (f != best_full ? !f : d < best_d)) best_d = d, best = h, best_full = f;
     }
     if (!best) return std::nullopt;
+    // Item 26: a turn where the tangents differ.
+    if (params.max_turns > 0 && (-graph.direction(cur.reversed())).dot(graph.direction(*best)) < params.turn_cos &&
+        ++turns > params.max_turns)
+      return std::nullopt;
     used.insert(best->segment);
     cycle.push_back(graph.oriented(*best));
     cur = *best;
@@ -55,9 +74,9 @@ std::optional<std::vector<OrientedSegment>> walk_towards(CurveGraph& graph, Half
 }  // namespace
 
 std::optional<std::vector<OrientedSegment>> manual_cycle(const Network& network, const Vec3& point,
-                                                         const ManualPatchParams& params) {
+                                                         const ManualPatchParams& params, bool closed_seam_nodes) {
   if (!point.allFinite()) return std::nullopt;
-  CurveGraph graph(network);
+  CurveGraph graph(network, closed_seam_nodes);
   // Nearest curve pieces first (growing radius keeps the query local).
   std::vector<CurveHit> hits;
   for (double r = 0.05; r <= params.search_radius * 2.0; r *= 4.0) {
@@ -72,7 +91,7 @@ std::optional<std::vector<OrientedSegment>> manual_cycle(const Network& network,
     // Both directions; keep the shorter closed walk.
     std::optional<std::vector<OrientedSegment>> best;
     for (bool forward : {true, false}) {
-      auto c = walk_towards(graph, HalfEdge{s, forward}, point, params.max_segments);
+      auto c = walk_towards(graph, HalfEdge{s, forward}, point, params);
       if (c && (!best || c->size() < best->size())) best = std::move(c);
     }
     if (best) return best;

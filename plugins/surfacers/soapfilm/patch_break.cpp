@@ -103,7 +103,7 @@ Cycle cycle_of(CurveGraph& graph, const std::vector<OrientedSegment>& boundary) 
 }
 
 bool broken_by(CurveGraph& graph, CycleSearcher& searcher, const Patch& patch, const std::vector<int>& key,
-               const std::set<int>& fresh, const CycleSearchParams& params) {
+               const std::set<int>& fresh, const CycleSearchParams& params, std::vector<int>* at) {
   std::set<NodeId> cycle_nodes;
   for (int s : key) {
     cycle_nodes.insert(graph.segment(s).node0);
@@ -116,8 +116,12 @@ bool broken_by(CurveGraph& graph, CycleSearcher& searcher, const Patch& patch, c
     for (NodeId x : cycle_nodes)
       for (const HalfEdge& h : graph.outgoing(x))
         if (new_leaving(h) && enters_patch(patch.mesh, graph.network().find_node(x)->position, graph.direction(h)) &&
-            reaches(graph, h, cycle_nodes, params.break_reach))
+            reaches(graph, h, cycle_nodes, params.break_reach)) {
+          if (at)
+            for (const HalfEdge& g : graph.outgoing(x))
+              if (std::binary_search(key.begin(), key.end(), g.segment)) at->push_back(g.segment);
           return true;
+        }
     return false;
   }
   const Cycle cycle = cycle_of(graph, patch.boundary);
@@ -127,10 +131,15 @@ bool broken_by(CurveGraph& graph, CycleSearcher& searcher, const Patch& patch, c
       if (new_leaving(h)) leavers.push_back({i, h});
   if (leavers.empty()) return false;
   const std::vector<Vec3> m = cycle_orientation(graph, searcher, cycle, fresh);
-  return !m.empty() && std::any_of(leavers.begin(), leavers.end(), [&](const Leaver& l) {
-    return searcher.between(cycle[l.at], cycle[(l.at + 1) % cycle.size()], l.h, m[l.at]) &&
-           reaches(graph, l.h, cycle_nodes, params.break_reach);
-  });
+  if (m.empty()) return false;
+  for (const Leaver& l : leavers) {
+    const HalfEdge &in = cycle[l.at], &out = cycle[(l.at + 1) % cycle.size()];
+    if (searcher.between(in, out, l.h, m[l.at]) && reaches(graph, l.h, cycle_nodes, params.break_reach)) {
+      if (at) *at = {in.segment, out.segment};
+      return true;
+    }
+  }
+  return false;
 }
 
 bool enters_patch(const Mesh& mesh, const Vec3& at, const Vec3& d) {

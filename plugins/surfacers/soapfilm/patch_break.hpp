@@ -32,9 +32,10 @@ Cycle cycle_of(CurveGraph& graph, const std::vector<OrientedSegment>& boundary);
 // the flipped one has no older segment between. Without `break_by_order`
 // (the default): it leaves into the fan of mesh triangles at the node
 // (enters_patch). False when the boundary is no cycle of `graph`.
-// `searcher` walks `graph`.
+// `searcher` walks `graph`. `at`, when given and the patch is broken,
+// receives the cycle's segments at the node the breaking segment leaves.
 bool broken_by(CurveGraph& graph, CycleSearcher& searcher, const Patch& patch, const std::vector<int>& key,
-               const std::set<int>& fresh, const CycleSearchParams& params);
+               const std::set<int>& fresh, const CycleSearchParams& params, std::vector<int>* at = nullptr);
 
 // Whether direction `d` leaving the boundary point `at` of a patch points
 // into it: inside the corner, at the mesh vertex nearest `at`, of one of the

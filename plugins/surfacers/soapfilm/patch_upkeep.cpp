@@ -121,7 +121,7 @@ std::vector<int> boundary_key(CurveGraph& graph, const std::vector<OrientedSegme
 UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSearchParams& params) {
   UpkeepResult result;
   const Network& net = sketch.network;
-  CurveGraph graph(net);
+  CurveGraph graph(net, params.closed_seam_nodes);
   CycleSearcher searcher(graph, params);
 
   std::set<CurveId> replaced;
@@ -158,17 +158,25 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
     const bool on_replaced = std::any_of(patch.boundary.begin(), patch.boundary.end(),
                                          [&](const OrientedSegment& p) { return replaced.count(p.curve); });
     const std::vector<int> key = boundary_key(graph, patch.boundary);
-    if (!on_replaced && !key.empty() && !broken_by(graph, searcher, patch, key, fresh, params)) continue;
+    std::vector<int> at_break;
+    if (!on_replaced && !key.empty() && !broken_by(graph, searcher, patch, key, fresh, params, &at_break)) continue;
     // Found again over the same pieces of curve, it keeps its identity
     // (item 25), also where this edit's nodes split a piece: CASSIE logs no
     // new patch for such a cycle (0 of the 26 the former rule remade at a
     // stroke event in the bundled sessions; README, ninth round).
     broken[id] = on_replaced ? std::vector<int>{} : key;
+    if (params.broken_seeds == BrokenSeeds::at_break && !at_break.empty()) {
+      first_seeds.insert(first_seeds.end(), at_break.begin(), at_break.end());
+      continue;
+    }
     for (const OrientedSegment& piece : patch.boundary) {
       if (!net.find_curve(piece.curve)) continue;
       if (const std::vector<int> cover = graph.covered_by(piece); !cover.empty()) {
-        first_seeds.push_back(cover.front());
-        break;
+        if (params.broken_seeds != BrokenSeeds::all) {
+          first_seeds.push_back(cover.front());
+          break;
+        }
+        first_seeds.insert(first_seeds.end(), cover.begin(), cover.end());
       }
     }
   }
@@ -267,7 +275,7 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
 std::vector<std::vector<OrientedSegment>> detect_all_cycles(const Network& network,
                                                             const CycleSearchParams& params,
                                                             UpkeepResult* stats) {
-  CurveGraph graph(network);
+  CurveGraph graph(network, params.closed_seam_nodes);
   CycleSearcher searcher(graph, params);
   std::set<int> all;
   for (const auto& [id, curve] : network.curves())

@@ -183,7 +183,7 @@ MissingCycle classify_missing(const Network& network, const std::map<std::int64_
     if (it == curve_of.end() || !network.find_curve(it->second)) return MissingCycle::curve_absent;
     stroke_of[it->second] = s;
   }
-  CurveGraph graph(network);
+  CurveGraph graph(network, params.closed_seam_nodes);
   CycleSearcher searcher(graph, params);
   std::set<int> seeds;
   for (const auto& [curve, s] : stroke_of)

@@ -1,4 +1,4 @@
-// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
+// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M] [--old-nodes-first]
 //                  [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
@@ -15,6 +15,8 @@
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
 // Bézier joint meets an alive curve (CassieGraphParams::on_curve);
+// --old-nodes-first reuses an old curve's node within δ before one of the
+// new curve within 0.5δ (CassieGraphParams::reuse_new_first unset);
 // --left-over-nodes also reuses the nodes deleted curves left inside others
 // (CassieGraphParams::reuse_left_over, off as in CASSIE's graph); --astray
 // lists every CASSIE patch no walk closes over, with the node where the
@@ -118,6 +120,8 @@ int main(int argc, char** argv) {
         // Replay: a joint this close (m) to an alive curve meets it.
         options.graph.on_curve = std::stod(argv[++i]);
         if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
+      } else if (a == "--old-nodes-first") {
+        options.graph.reuse_new_first = false;
       } else if (a == "--left-over-nodes") {
         options.graph.reuse_left_over = true;
       } else if (a == "--no-user-edits") {
@@ -134,7 +138,7 @@ int main(int argc, char** argv) {
         list_breaks = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]\n";
+                     "[--meets M] [--old-nodes-first] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;

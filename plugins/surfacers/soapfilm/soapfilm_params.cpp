@@ -45,6 +45,25 @@ const ParamTable<SoapfilmParams>& parameters() {
                    "a new segment enters a patch when it sits between two consecutive cycle segments in the node's "
                    "order around its normal oriented by the cycle (CASSIE app, item 25); off: when it leaves into "
                    "the patch's mesh")
+          .choice("close_rule", nested_field(&P::search, &CycleSearchParams::close_rule),
+                  {{"into_start", CloseRule::into_start},
+                   {"into_start_segment", CloseRule::into_start_segment},
+                   {"at_start_node", CloseRule::at_start_node}},
+                  "a walk closes when its turn takes the start segment again, or when it arrives back at the start "
+                  "node (CASSIE app, item 24, read two ways)")
+          .boolean("sharp_node_order", nested_field(&P::search, &CycleSearchParams::sharp_node_order),
+                   "at a sharp node, order the candidates around the node's own normal oriented by the flip test "
+                   "(item 23's order) instead of around the transported normal (CASSIE app, item 24)")
+          .choice("broken_seeds", nested_field(&P::search, &CycleSearchParams::broken_seeds),
+                  {{"one", BrokenSeeds::one}, {"all", BrokenSeeds::all}, {"at_break", BrokenSeeds::at_break}},
+                  "segments of a broken patch searched first: one, all, or those at the node the breaking segment "
+                  "leaves (CASSIE app, item 25)")
+          .boolean("start_turn", nested_field(&P::search, &CycleSearchParams::start_turn),
+                   "a segment's walks begin by turning at its start node with that node's normal instead of leaving "
+                   "it along the segment (CASSIE app, item 25, read the other way)")
+          .boolean("closed_seam_nodes", nested_field(&P::search, &CycleSearchParams::closed_seam_nodes),
+                   "a closed curve's seam node stays a graph node when other curves split the curve (CASSIE app, "
+                   "item 22)")
           .boolean("seed_split_segments", nested_field(&P::search, &CycleSearchParams::seed_split_segments),
                    "also search an old curve's segments split by a node the edit added on it (CASSIE app, item 25)")
           .boolean("manual_patches_count", nested_field(&P::search, &CycleSearchParams::manual_patches_count),
@@ -55,6 +74,12 @@ const ParamTable<SoapfilmParams>& parameters() {
                    "reject cycles running clockwise around their normals (an open sheet's outer border; not in the app)")
           .integer("manual_max_segments", nested_field(&P::manual, &ManualPatchParams::max_segments), 1.0, 10000.0, "",
                    "longest manual cycle (segments)")
+          .integer("manual_max_turns", nested_field(&P::manual, &ManualPatchParams::max_turns), 0.0, 10000.0, "",
+                   "a manual walk gives up after this many turns where the tangents differ (cos < 0.8); 0 = no "
+                   "limit (CASSIE app, item 26: 10)")
+          .boolean("manual_manifold_first", nested_field(&P::manual, &ManualPatchParams::manifold_first),
+                   "a manual walk takes segments bounding fewer than two patches before nearer others (CASSIE app, "
+                   "item 26)")
           .real("edge_length", &P::edge_length, 1e-4, 1.0, "m",
                    "boundary sampling and target edge length of the patch meshes")
           .integer("max_boundary_points", &P::max_boundary_points, 3.0, 10000.0, "",

@@ -82,12 +82,12 @@ SurfaceUpdate soapfilm_command(const Sketch& sketch, const SurfaceCommand& comma
   SurfaceUpdate out;
   const Network& net = sketch.network;
   if (const auto* add = std::get_if<AddPatchEvent>(&command)) {
-    const auto cycle = manual_cycle(net, add->point, params.manual);
+    const auto cycle = manual_cycle(net, add->point, params.manual, params.search.closed_seam_nodes);
     if (!cycle) {
       out.error = "add_patch: no closed cycle of curves found around the point";
       return out;
     }
-    CurveGraph graph(net);
+    CurveGraph graph(net, params.search.closed_seam_nodes);
     const std::vector<int> key = boundary_key(graph, *cycle);
     // A patch over the same cycle bounds the cycle's first curve.
     for (PatchId id : net.patches_on(cycle->front().curve))

@@ -1,5 +1,7 @@
 // CASSIE's graph rebuilt while its curves are replayed (cassie_graph_edit.hpp,
 // CASSIE app item 22).
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
 #include "cassie_graph.hpp"
@@ -110,4 +112,56 @@ TEST_CASE("a node a deleted curve left inside another is reused only with reuse_
   CHECK(a.ours == 4);
   CHECK(a.cassie_matched == 4);
   CHECK(a.ours_matched == 4);
+}
+
+TEST_CASE("a meeting reuses the new curve's node within 0.5 delta before the old curve's within delta",
+          "[soapfilm]") {
+  // CASSIE app, item 22: "an intersection reuses a node within 0.5δ on the
+  // new stroke, within δ on the old one". A runs along x with node M at
+  // x = 0.5 (where D starts); C passes 8 mm above A's line, along z. B, two
+  // cubic pieces, meets C at its joint t = 1 (a new node N there) and ends
+  // on A at x = 0.506: 8.9 mm from N (within 0.5δ = 1 cm) and 6 mm from M
+  // (within δ). Both are candidates; the order decides which node B's end
+  // joins.
+  for (const bool new_first : {true, false}) {
+    soapfilm::CassieGraphParams params;
+    params.reuse_new_first = new_first;
+    Network net;
+    net.apply(soapfilm::cassie_graph_edit(net, {{1, straight({0, 0, 0}, {1, 0, 0})}}, params));
+    net.apply(soapfilm::cassie_graph_edit(net, {{2, straight({0.5, 0, 0}, {0.5, -1, 0})}}, params));
+    net.apply(soapfilm::cassie_graph_edit(net, {{3, straight({0.51, 0.008, -0.5}, {0.51, 0.008, 0.5})}}, params));
+    REQUIRE(net.nodes().size() == 6);  // A's ends, M, D's far end, C's ends (C meets nothing)
+    Curve b;
+    const Vec3 p0(0.51, 0.5, 0), p1(0.51, 0.008, 0), p2(0.506, 0, 0);
+    b.control_points = {p0, p0 + (p1 - p0) / 3.0, p0 + 2.0 * (p1 - p0) / 3.0, p1,
+                        p1 + (p2 - p1) / 3.0, p1 + 2.0 * (p2 - p1) / 3.0, p2};
+    b.sharp = {false, false, false};
+    net.apply(soapfilm::cassie_graph_edit(net, {{4, b}}, params));
+    const NetworkCurve* a = nullptr;
+    const NetworkCurve* bc = nullptr;
+    for (const auto& [id, c] : net.curves()) {
+      if (c.source_stroke == 1) a = &c;
+      if (c.source_stroke == 4) bc = &c;
+    }
+    REQUIRE(a != nullptr);
+    REQUIRE(bc != nullptr);
+    const auto node_near = [&](const Vec3& p) -> const Node* {
+      const std::vector<NodeHit> hits = net.nodes_near(p, 1e-9);
+      return hits.size() == 1 ? net.find_node(hits.front().node) : nullptr;
+    };
+    const Node* m = node_near({0.5, 0, 0});
+    const Node* n = node_near(p1);
+    REQUIRE(m != nullptr);
+    REQUIRE(n != nullptr);
+    const auto on = [](const Node* x, CurveId c) {
+      return std::any_of(x->incidences.begin(), x->incidences.end(), [&](const NodeIncidence& i) { return i.curve == c; });
+    };
+    CHECK(net.nodes().size() == 8);  // and B's start and N
+    // New first: N joins A too (B's end has no node of its own: N is within
+    // 0.5δ of it); old first: B's end is M.
+    CHECK(on(n, a->id) == new_first);
+    CHECK(on(m, bc->id) == !new_first);
+    CHECK(n->incidences.size() == (new_first ? 3u : 2u));
+    CHECK(m->incidences.size() == (new_first ? 2u : 3u));
+  }
 }

@@ -73,3 +73,45 @@ TEST_CASE("curve graph: a left-over node at a meeting's parameter stands for the
     CHECK(graph.outgoing(5).size() == 4);
   }
 }
+
+TEST_CASE("curve graph: a closed curve's seam stays a node when split, with closed_seam_nodes", "[soapfilm]") {
+  // CASSIE app, item 22: "a closed stroke is one node with its segment
+  // attached twice". A closed curve (a square of four lines, seam node 1 at
+  // t = 0) crossed at t = 2 by curve 2 (node 3): without the option the seam
+  // is no graph node and the closed curve is one loop at node 3; with it,
+  // two segments 3 -> 1 -> 3 and the seam a two-segment node.
+  Curve square;
+  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}};
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+    const Vec3 &a = corners[k], &b = corners[k + 1];
+    if (k == 0) square.control_points.push_back(a);
+    square.control_points.insert(square.control_points.end(), {a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+  }
+  square.sharp.assign(5, false);
+  square.closed = true;
+  Edit e;
+  e.curves_added = {make_network_curve(1, square, Layer::shape),
+                    make_network_curve(2, make_line(Vec3(1, 1, 0), Vec3(2, 2, 0)), Layer::shape)};
+  e.nodes_added = {node(1, Vec3(0, 0, 0), {{1, 0.0}}), node(3, Vec3(1, 1, 0), {{1, 2.0}, {2, 0.0}}),
+                   node(4, Vec3(2, 2, 0), {{2, 1.0}})};
+  Network net;
+  net.apply(e);
+
+  CurveGraph plain(net);
+  CHECK_FALSE(plain.is_graph_node(1));
+  const std::vector<int>& loop = plain.segments_of(1);
+  REQUIRE(loop.size() == 1);
+  CHECK(plain.segment(loop.front()).node0 == 3);
+  CHECK(plain.segment(loop.front()).node1 == 3);
+
+  CurveGraph seams(net, true);
+  CHECK(seams.is_graph_node(1));
+  const std::vector<int>& halves = seams.segments_of(1);
+  REQUIRE(halves.size() == 2);
+  CHECK(seams.segment(halves[0]).node0 == 1);
+  CHECK(seams.segment(halves[0]).node1 == 3);
+  CHECK(seams.segment(halves[1]).node0 == 3);
+  CHECK(seams.segment(halves[1]).node1 == 1);
+  CHECK(seams.outgoing(1).size() == 2);
+  CHECK(seams.outgoing(3).size() == 3);
+}

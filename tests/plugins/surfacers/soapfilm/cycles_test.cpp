@@ -161,6 +161,32 @@ TEST_CASE("cube: 12 edges with nodes at the corners give the 6 faces", "[soapfil
   for (const auto& [c, n] : per_curve) CHECK(n == 2);
 }
 
+TEST_CASE("cube: the twelfth round's readings of items 24 and 25 still give the 6 faces", "[soapfilm]") {
+  // Each corner is sharp (|n·t| = 0.577): the candidates' order there
+  // (sharp_node_order), where the walk closes (close_rule), where it starts
+  // (start_turn) and which broken seeds come first must not change a cube.
+  const std::vector<std::pair<std::string, ParamValue>> variants{
+      {"close_rule", std::string("into_start_segment")}, {"close_rule", std::string("at_start_node")},
+      {"sharp_node_order", true}, {"start_turn", true}, {"broken_seeds", std::string("all")},
+      {"broken_seeds", std::string("at_break")}, {"closed_seam_nodes", true}};
+  const std::multiset<std::set<CurveId>> faces = [] {
+    const auto edges = cube_edges(0.2);
+    PreparedSession s(edges);
+    s.draw_all(edges.size());
+    return patch_curves(s.network());
+  }();
+  REQUIRE(faces.size() == 6);
+  for (const auto& [name, value] : variants) {
+    INFO(name);
+    const auto edges = cube_edges(0.2);
+    PreparedSession s(edges, make_soapfilm({{name, value}}));
+    s.draw_all(edges.size());
+    for (const auto& st : s.steps) CHECK(st.error == "");
+    CHECK(patch_curves(s.network()) == faces);
+    for (const auto& [id, p] : s.network().patches()) CHECK(closed_chain(p));
+  }
+}
+
 TEST_CASE("cylinder: two circles and four sides give the four side patches", "[soapfilm]") {
   const auto curves = cylinder(0.1, 0.3);
   PreparedSession s(curves);

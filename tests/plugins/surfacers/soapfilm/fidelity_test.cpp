@@ -117,7 +117,9 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.cassie_created == 1727);
   CHECK(replay.cassie_broken == 362);
   // Measured: final 356/479 (74.3 %), precision 356/505 (70.5 %); replay
-  // created 1412/1727 (81.8 %), precision 1412/1755 (80.5 %); at the end
+  // created 1412/1727 (81.8 %), precision 1412/1752 (80.6 %; twelfth round:
+  // a meeting reuses the new curve's node before the old curve's, 1755
+  // made before); at the end
   // 407/480 (84.8 %), precision 407/473 (86.0 %) (ninth round: a crossed
   // patch found again over split pieces keeps its identity; before, 1764
   // made, 80.0 %, and 407/471, 86.4 %); 321 of CASSIE's 362 breaks made by
@@ -126,7 +128,7 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(final.found >= 352);
   CHECK(double(final.found) / final.ours >= 0.70);
   CHECK(replay.recall_created() >= 0.815);
-  CHECK(replay.precision_created() >= 0.80);
+  CHECK(replay.precision_created() >= 0.805);
   CHECK(replay.recall_final() >= 0.845);
   CHECK(replay.precision_final() >= 0.855);
   CHECK(replay.matched_broken >= 318);
@@ -151,10 +153,11 @@ TEST_CASE("fidelity to CASSIE's automatic patches on every bundled session", "[s
   CHECK(replay.causes.miss_not_closed <= 88);
   CHECK(replay.causes.miss_not_found <= 90);
   CHECK(replay.causes.end_removed_by_crossing <= 25);
-  // Our patches CASSIE never made, at any event or by hand: measured 186
+  // Our patches CASSIE never made, at any event or by hand: measured 183
   // (eighth round 180; the ninth round's kept identities change which
-  // patch the users' deletions hit in 01-2-1, +6 there).
-  CHECK(replay.causes.extra_other <= 190);
+  // patch the users' deletions hit in 01-2-1, +6 there; twelfth round's
+  // node order, -3 in vintage_car and teapot).
+  CHECK(replay.causes.extra_other <= 185);
   // Timing (ninth round): CASSIE's patches made by us at another event,
   // measured 67, and ours CASSIE made at another event, 99 (117 when a
   // crossed patch found again over split pieces was made anew). Stroke
