@@ -51,20 +51,36 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<Vec3>& points,
                                                     const std::vector<int>& anchors,
                                                     const std::vector<CurveId>& intersections,
-                                                    double max_distance) {
+                                                    double max_distance, const std::vector<Vec3>* brush,
+                                                    double brush_radius) {
   if (points.empty()) return std::nullopt;
   for (const auto& [id, patch] : network.patches()) {
     if (patch.mesh.faces.empty()) continue;
-    std::vector<std::optional<MeshPoint>> near(points.size());
+    Box3 mesh_box;
+    for (const Vec3& v : patch.mesh.vertices) mesh_box.extend(v);
     bool touched = false;
+    if (brush) {
+      Box3 reach = mesh_box;
+      reach.min().array() -= brush_radius;
+      reach.max().array() += brush_radius;
+      for (const Vec3& b : *brush) {
+        if (!reach.contains(b)) continue;
+        const auto m = closest_on_mesh(patch.mesh, b);
+        if (m && m->distance <= brush_radius) {
+          touched = true;
+          break;
+        }
+      }
+      if (!touched) continue;
+    }
+    std::vector<std::optional<MeshPoint>> near(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
       near[i] = closest_on_mesh(patch.mesh, points[i]);
-      if (near[i] && near[i]->distance <= max_distance) touched = true;
+      if (near[i] && near[i]->distance <= max_distance) touched = touched || !brush;
       else near[i].reset();
     }
     if (!touched) continue;
-    Box3 box;
-    for (const Vec3& v : patch.mesh.vertices) box.extend(v);
+    Box3 box = mesh_box;
     box.min().array() -= max_distance;
     box.max().array() += max_distance;
     bool whole = std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return box.contains(p); });
