@@ -24,10 +24,7 @@ std::filesystem::path cassie_raw_data_file(const Recording& recording, const std
 std::vector<ReferencePatch> cassie_reference_patches(const Recording& recording,
                                                      const std::filesystem::path& raw_data_dir,
                                                      const std::string& fallback_session) {
-  std::vector<ReferencePatch> out;
-  for (const CassiePatchLog& p : read_cassie_patches(cassie_raw_data_file(recording, raw_data_dir, fallback_session)))
-    if (p.created) out.push_back({p.id, p.strokes, *p.created, p.deleted, p.automatic});
-  return out;
+  return reference_patches(read_cassie_patches(cassie_raw_data_file(recording, raw_data_dir, fallback_session)));
 }
 
 }  // namespace sketchlab::cli

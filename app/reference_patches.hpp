@@ -18,10 +18,10 @@ namespace sketchlab::cli {
 // the plugin is not loaded, so the comparison goes on without patches.
 std::shared_ptr<Surfacer> reference_patch_surfacer(const PluginHost& host, const std::string& name);
 
+// The reference patches (lab reference_patches) of
 // `raw_data_dir`/<session>.json (the recording's header source "session",
-// else `fallback_session`): every patch with an add-surface time (CASSIE app,
-// items 26–27: automatic and manual ones), from that time until deleted by
-// hand. Throws std::runtime_error naming the file for malformed data.
+// else `fallback_session`). Throws std::runtime_error naming the file for
+// malformed data.
 std::vector<ReferencePatch> cassie_reference_patches(const Recording& recording,
                                                      const std::filesystem::path& raw_data_dir,
                                                      const std::string& fallback_session);

@@ -426,6 +426,13 @@ std::vector<CassiePatchLog> read_cassie_patches(const std::filesystem::path& raw
   return out;
 }
 
+std::vector<ReferencePatch> reference_patches(const std::vector<CassiePatchLog>& log) {
+  std::vector<ReferencePatch> out;
+  for (const CassiePatchLog& p : log)
+    if (p.created) out.push_back({p.id, p.strokes, *p.created, p.deleted, p.automatic});
+  return out;
+}
+
 Recording import_cassie(const std::filesystem::path& sketch_history_json,
                         const std::filesystem::path& raw_data_json, const std::string& session,
                         std::vector<std::string>* warnings_out) {

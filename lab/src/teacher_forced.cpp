@@ -64,37 +64,43 @@ void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>
 
 // The reference patch over `curves`, meshed by `surfacer` (TeacherForcedOptions):
 // the surfacer sees only these curves (same ids) and their nodes with the
-// incidences among them, so its walk from the nodes' centroid can follow
-// no other curve. Empty with `why` set when it makes none.
+// incidences among them, so its walk towards the point can follow no other
+// curve. The point is the nodes' centroid, then (a concave cycle's centroid
+// may lie nearer a dangling piece) the midpoint of each pair of nodes.
+// Empty with `why` set when no point gives a patch.
 std::optional<Patch> mesh_reference_patch(const Sketch& sketch, const std::set<CurveId>& curves,
                                           Surfacer& surfacer, std::string& why) {
   Sketch sub;
   sub.workspace = sketch.workspace;
   Edit e;
-  Vec3 sum = Vec3::Zero();
-  int joints = 0;
+  std::vector<Vec3> joints;
   for (CurveId c : curves) e.curves_added.push_back(*sketch.network.find_curve(c));
   for (const auto& [id, node] : sketch.network.nodes()) {
     Node kept{node};
     std::erase_if(kept.incidences, [&](const NodeIncidence& i) { return !curves.count(i.curve); });
     if (kept.incidences.size() < 2) continue;
     e.nodes_added.push_back(kept);
-    sum += node.position;
-    ++joints;
-  }
-  if (joints == 0) {  // a closed curve alone: its control points' centroid
-    int n = 0;
-    for (const NetworkCurve& nc : e.curves_added)
-      for (const Vec3& q : nc.curve.control_points) sum += q, ++n;
-    joints = n;
+    joints.push_back(node.position);
   }
   sub.network.apply(e);
-  SurfaceUpdate u = surfacer.command(sub, AddPatchEvent{sum / joints});
-  if (!u.error.empty() || u.edit.patches_added.empty()) {
-    why = u.error.empty() ? "the surfacer made no patch" : u.error;
-    return std::nullopt;
+  std::vector<Vec3> points(1, Vec3::Zero());
+  if (joints.empty()) {  // a closed curve alone: its control points' centroid
+    int n = 0;
+    for (const NetworkCurve& nc : e.curves_added)
+      for (const Vec3& q : nc.curve.control_points) points[0] += q, ++n;
+    points[0] /= n;
+  } else {
+    for (const Vec3& q : joints) points[0] += q / static_cast<double>(joints.size());
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      for (std::size_t j = i + 1; j < joints.size(); ++j) points.push_back((joints[i] + joints[j]) / 2);
   }
-  return std::move(u.edit.patches_added.front());
+  for (const Vec3& q : points) {
+    SurfaceUpdate u = surfacer.command(sub, AddPatchEvent{q});
+    if (u.error.empty() && !u.edit.patches_added.empty()) return std::move(u.edit.patches_added.front());
+    if (why.empty()) why = u.error.empty() ? "the surfacer made no patch" : u.error;
+  }
+  why += " (its " + std::to_string(curves.size()) + " curves meet at " + std::to_string(joints.size()) + " nodes)";
+  return std::nullopt;
 }
 
 std::string snap_kind(const Sketch& sketch, const Vec3& p, double tol) {

@@ -29,6 +29,19 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   return a + ab * (vb / den) + ac * (vc / den);
 }
 
+// p within r of the mesh whose bounding box is `box`.
+bool within(const Mesh& mesh, const Box3& box, const Vec3& p, double r) {
+  if (mesh.faces.empty() || box.exteriorDistance(p) > r) return false;
+  const auto m = closest_on_mesh(mesh, p);
+  return m && m->distance <= r;
+}
+
+Box3 mesh_box(const Mesh& mesh) {
+  Box3 box;
+  for (const Vec3& v : mesh.vertices) box.extend(v);
+  return box;
+}
+
 }  // namespace
 
 std::optional<MeshPoint> closest_on_mesh(const Mesh& mesh, const Vec3& p) {
@@ -56,21 +69,11 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
   if (points.empty()) return std::nullopt;
   for (const auto& [id, patch] : network.patches()) {
     if (patch.mesh.faces.empty()) continue;
-    Box3 mesh_box;
-    for (const Vec3& v : patch.mesh.vertices) mesh_box.extend(v);
+    const Box3 bounds = mesh_box(patch.mesh);
     bool touched = false;
     if (brush) {
-      Box3 reach = mesh_box;
-      reach.min().array() -= brush_radius;
-      reach.max().array() += brush_radius;
-      for (const Vec3& b : *brush) {
-        if (!reach.contains(b)) continue;
-        const auto m = closest_on_mesh(patch.mesh, b);
-        if (m && m->distance <= brush_radius) {
-          touched = true;
-          break;
-        }
-      }
+      touched = std::any_of(brush->begin(), brush->end(),
+                            [&](const Vec3& b) { return within(patch.mesh, bounds, b, brush_radius); });
       if (!touched) continue;
     }
     std::vector<std::optional<MeshPoint>> near(points.size());
@@ -80,7 +83,7 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
       else near[i].reset();
     }
     if (!touched) continue;
-    Box3 box = mesh_box;
+    Box3 box = bounds;
     box.min().array() -= max_distance;
     box.max().array() += max_distance;
     bool whole = std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return box.contains(p); });

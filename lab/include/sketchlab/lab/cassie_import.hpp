@@ -46,6 +46,7 @@
 #include <utility>
 #include <vector>
 
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/recording/recording.hpp"
 #include "sketchlab/types.hpp"
 
@@ -102,6 +103,11 @@ struct CassiePatchLog {
 // strokesID integers >= 0, a time in [0, 1e9] s); sessions without
 // allCreatedPatches (older exports, Freehand/Armature) give none.
 std::vector<CassiePatchLog> read_cassie_patches(const std::filesystem::path& raw_data_json);
+
+// The patches of the log for the teacher-forced rebuild (teacher_forced.hpp):
+// every one with an add-surface time (automatic and manual: CASSIE app,
+// item 26), from then until deleted by hand (or, item 27, with a stroke).
+std::vector<ReferencePatch> reference_patches(const std::vector<CassiePatchLog>& log);
 
 struct GridInference {
   bool found = false;

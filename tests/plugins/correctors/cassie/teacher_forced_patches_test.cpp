@@ -4,10 +4,14 @@
 // or after it was deleted.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 
+#include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
+#include "sketchlab/recording/recording_reader.hpp"
 #include "synthetic.hpp"
+#include "test_paths.hpp"
 
 using namespace sketchlab;
 using sketchlab::test::make_stroke;
@@ -88,4 +92,54 @@ TEST_CASE("Teacher-forced: a stroke over a logged patch is projected onto it", "
     CHECK(warnings[0].find("patch 43") != std::string::npos);
     CHECK(again[5].patches == 0);
   }
+}
+
+TEST_CASE("Teacher-forced fidelity with CASSIE's patches on the Patch and showcase sessions",
+          "[cassie][teacher][surface][slow]") {
+  PluginHost host;
+  host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
+  REQUIRE(host.find(PluginKind::surfacer, "soapfilm"));
+  auto corrector = host.make_corrector("cassie", {{"mirror", std::string("plane")}});
+  auto surfacer = host.make_surfacer("soapfilm", {});
+  std::vector<TeacherForcedStroke> patch_group, showcase;
+  std::size_t patches = 0, left_out = 0, cassie_on = 0, both_on = 0;
+  for (const auto& e : std::filesystem::directory_iterator(test::source_path("data/recordings"))) {
+    const Recording rec = read_recording(e.path());
+    const std::string group = fidelity_group(rec.header);
+    if (group != "Patch" && group != "showcase") continue;
+    const std::filesystem::path raw = test::source_path("data/cassie/raw_data/" + e.path().stem().string() + ".json");
+    TeacherForcedOptions opt;
+    opt.track = "cassie";
+    opt.surfacer = surfacer.get();
+    opt.patches = reference_patches(read_cassie_patches(raw));
+    std::vector<std::string> warnings;
+    const auto strokes = teacher_forced(rec, *corrector, opt, &warnings);
+    patches += opt.patches.size();
+    left_out += warnings.size();
+    const auto logs = read_cassie_constraint_logs(raw);
+    for (const TeacherForcedStroke& r : strokes) {
+      const auto log = logs.find(r.stroke);
+      if (log == logs.end() || !log->second.on_surface.value_or(false)) continue;
+      ++cassie_on;
+      for (const Constraint& c : r.constraints) both_on += c.kind == ConstraintKind::on_surface;
+    }
+    auto& g = group == "Patch" ? patch_group : showcase;
+    g.insert(g.end(), strokes.begin(), strokes.end());
+  }
+  // Measured (cassie README, "CASSIE's patches"): 2,084 patches, 134 left
+  // out; 55 of CASSIE's 67 on-surface strokes projected; Patch 85.5 % /
+  // 84.4 % / 4.71 mm / 5.94 mm, showcase 92.5 % / 89.3 % / 2.93 mm / 4.73 mm.
+  CHECK(patches == 2084);
+  CHECK(left_out < 150);
+  CHECK(cassie_on == 67);
+  CHECK(both_on >= 52);
+  const TeacherForcedSummary p = summarize(patch_group), s = summarize(showcase);
+  CHECK(p.snap_agreement() > 0.850);
+  CHECK(p.snap_kind_agreement() > 0.840);
+  CHECK(p.endpoint_distance.median < 0.0049);
+  CHECK(p.mean_deviation.median < 0.0061);
+  CHECK(s.snap_agreement() > 0.920);
+  CHECK(s.snap_kind_agreement() > 0.888);
+  CHECK(s.endpoint_distance.median < 0.0031);
+  CHECK(s.mean_deviation.median < 0.0049);
 }
