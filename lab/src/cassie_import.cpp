@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "sketchlab/curve.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/event.hpp"
 #include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/stroke.hpp"

@@ -79,7 +79,7 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
     std::vector<std::optional<MeshPoint>> near(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
       near[i] = closest_on_mesh(patch.mesh, points[i]);
-      if (near[i] && near[i]->distance <= max_distance) touched = touched || !brush;
+      if (near[i] && near[i]->distance <= max_distance) touched = true;  // with `brush`: already
       else near[i].reset();
     }
     if (!touched) continue;

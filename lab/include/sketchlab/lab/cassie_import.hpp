@@ -46,11 +46,12 @@
 #include <utility>
 #include <vector>
 
-#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/recording/recording.hpp"
 #include "sketchlab/types.hpp"
 
 namespace sketchlab {
+
+struct ReferencePatch;  // teacher_forced.hpp
 
 // Imports one session from the two files. `session` names it in the header;
 // `warnings`, when given, receives the warnings above. Throws
