@@ -14,6 +14,7 @@
 
 #include "sketchlab/geometry/arclength.hpp"
 #include "sketchlab/network_curve.hpp"
+#include "sketchlab/network_nodes.hpp"
 
 namespace sketchlab {
 namespace {
@@ -62,14 +63,39 @@ void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>
   curve_of[p.stroke] = id;
 }
 
+// The surfacer's patch from an add-patch command on `sub` at the centroid of
+// `joints`, then (a concave cycle's centroid may lie nearer a dangling
+// piece) at the midpoint of each pair of them; without joints, at the
+// centroid of the curves' control points (a closed curve alone).
+std::optional<Patch> walk_patch(const Sketch& sub, const std::vector<Vec3>& joints, Surfacer& surfacer,
+                                std::string& why) {
+  std::vector<Vec3> points(1, Vec3::Zero());
+  if (joints.empty()) {
+    int n = 0;
+    for (const auto& [id, nc] : sub.network.curves())
+      for (const Vec3& q : nc.curve.control_points) points[0] += q, ++n;
+    points[0] /= n;
+  } else {
+    for (const Vec3& q : joints) points[0] += q / static_cast<double>(joints.size());
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      for (std::size_t j = i + 1; j < joints.size(); ++j) points.push_back((joints[i] + joints[j]) / 2);
+  }
+  for (const Vec3& q : points) {
+    SurfaceUpdate u = surfacer.command(sub, AddPatchEvent{q});
+    if (u.error.empty() && !u.edit.patches_added.empty()) return std::move(u.edit.patches_added.front());
+    if (why.empty()) why = u.error.empty() ? "the surfacer made no patch" : u.error;
+  }
+  return std::nullopt;
+}
+
 // The reference patch over `curves`, meshed by `surfacer` (TeacherForcedOptions):
 // the surfacer sees only these curves (same ids) and their nodes with the
-// incidences among them, so its walk towards the point can follow no other
-// curve. The point is the nodes' centroid, then (a concave cycle's centroid
-// may lie nearer a dangling piece) the midpoint of each pair of nodes.
-// Empty with `why` set when no point gives a patch.
+// incidences among them, so its walk can follow no other curve; failing
+// that, also with nodes where a joint of one lies within `junction` of
+// another (CASSIE's graph joins curves there; add_reference does not).
+// Empty with `why` set when neither gives a patch.
 std::optional<Patch> mesh_reference_patch(const Sketch& sketch, const std::set<CurveId>& curves,
-                                          Surfacer& surfacer, std::string& why) {
+                                          double junction, Surfacer& surfacer, std::string& why) {
   Sketch sub;
   sub.workspace = sketch.workspace;
   Edit e;
@@ -83,23 +109,23 @@ std::optional<Patch> mesh_reference_patch(const Sketch& sketch, const std::set<C
     joints.push_back(node.position);
   }
   sub.network.apply(e);
-  std::vector<Vec3> points(1, Vec3::Zero());
-  if (joints.empty()) {  // a closed curve alone: its control points' centroid
-    int n = 0;
-    for (const NetworkCurve& nc : e.curves_added)
-      for (const Vec3& q : nc.curve.control_points) points[0] += q, ++n;
-    points[0] /= n;
-  } else {
-    for (const Vec3& q : joints) points[0] += q / static_cast<double>(joints.size());
-    for (std::size_t i = 0; i < joints.size(); ++i)
-      for (std::size_t j = i + 1; j < joints.size(); ++j) points.push_back((joints[i] + joints[j]) / 2);
+  if (auto patch = walk_patch(sub, joints, surfacer, why)) return patch;
+  const std::size_t exact = joints.size();
+  Edit near;
+  NodeId next = std::max(sub.network.next_node_id(), sketch.network.next_node_id());
+  for (CurveId c : curves) {
+    const Curve& curve = sub.network.find_curve(c)->curve;
+    for (int k = 0; k <= curve.segment_count(); ++k)
+      connect_point(sub.network, curve.control_points[3 * k], c, k, junction, near, next);
   }
-  for (const Vec3& q : points) {
-    SurfaceUpdate u = surfacer.command(sub, AddPatchEvent{q});
-    if (u.error.empty() && !u.edit.patches_added.empty()) return std::move(u.edit.patches_added.front());
-    if (why.empty()) why = u.error.empty() ? "the surfacer made no patch" : u.error;
+  if (!near.nodes_added.empty()) {
+    sub.network.apply(near);
+    for (const Node& n : near.nodes_added) joints.push_back(n.position);
+    if (auto patch = walk_patch(sub, joints, surfacer, why)) return patch;
   }
-  why += " (its " + std::to_string(curves.size()) + " curves meet at " + std::to_string(joints.size()) + " nodes)";
+  why += " (its " + std::to_string(curves.size()) + " curves meet at " + std::to_string(exact) + " nodes, " +
+         std::to_string(joints.size() - exact) + " more within " + std::to_string(junction * 1000).substr(0, 4) +
+         " mm)";
   return std::nullopt;
 }
 
@@ -170,6 +196,8 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
   if (opt.resample < 2) throw std::invalid_argument("teacher_forced: resample must be >= 2");
   if (!opt.patches.empty() && !opt.surfacer)
     throw std::invalid_argument("teacher_forced: reference patches need a surfacer to mesh them");
+  if (!(opt.patch_junction >= 0))
+    throw std::invalid_argument("teacher_forced: patch_junction must be >= 0 (metres)");
   if (!(opt.snap_tolerance >= 0)) throw std::invalid_argument("teacher_forced: snap tolerance must be >= 0");
   std::map<StrokeId, Curve> reference;
   for (const Event& e : rec.events)
@@ -239,7 +267,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
         curves.insert(c->second);
       }
       std::string why;
-      auto patch = mesh_reference_patch(sketch, curves, *opt.surfacer, why);
+      auto patch = mesh_reference_patch(sketch, curves, opt.patch_junction, *opt.surfacer, why);
       if (!patch) return warn(*p, why), true;
       patch->id = sketch.network.next_patch_id();
       patch->automatic = p->automatic;

@@ -57,6 +57,11 @@ struct TeacherForcedOptions {
   // stroke without a reference curve) is left out with a warning.
   std::vector<ReferencePatch> patches;
   Surfacer* surfacer = nullptr;
+  // In that sketch, a joint of one of the patch's curves within this (m) of
+  // another of them is a node too: CASSIE's graph joins curves whose ends
+  // stop up to a few mm off (vintage_car: 0.2-2.6 mm), where the rebuilt
+  // network, with nodes only at exact joints, does not.
+  double patch_junction = 3e-3;
 };
 
 struct TeacherForcedStroke {
@@ -101,7 +106,8 @@ std::vector<std::string> reference_tracks(const Recording& recording);
 
 // Throws std::invalid_argument for resample < 2, a negative tolerance, or a
 // recording without reference curves on options.track (the message names
-// the tracks it has), or patches without a surfacer. `warnings`, when given,
+// the tracks it has), or patches without a surfacer, or a negative
+// patch_junction. `warnings`, when given,
 // receives one line per reference patch left out (its id and why).
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corrector& corrector,
                                                 const TeacherForcedOptions& options = {},
