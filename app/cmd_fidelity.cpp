@@ -1,5 +1,5 @@
 // `sketchlab fidelity DIR_OR_RECORDING... --corrector NAME [--param k=v ...]
-// [--track cassie] [--csv-dir DIR]`: the teacher-forced comparison
+// [--track cassie] [--csv-dir DIR] [--cassie-logs DIR [--no-patches]]`: the teacher-forced comparison
 // (kernel run/teacher_forced.hpp) over many sessions at once, summarised per
 // CASSIE system (Freehand / Armature / Patch / showcase), for the study
 // sessions together and for all.
@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "fidelity_causes.hpp"
 #include "plugin_arguments.hpp"
+#include "reference_patches.hpp"
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
@@ -33,6 +34,7 @@ struct FidelityOptions {
   double snap_tolerance = 1e-4;
   bool causes = false;
   std::string cassie_logs;
+  bool no_patches = false;
   double near = 0.02;
 };
 
@@ -136,7 +138,11 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--cassie-logs", o->cassie_logs,
                   "CASSIE's raw_data directory: <session>.json gives the constraints CASSIE applied and "
                   "rejected, for --causes, and its per-stroke flags (planar, closedLoop, onSurface), compared "
-                  "with ours in a table per group and the planar/closed agreement columns");
+                  "with ours in a table per group and the planar/closed agreement columns; CASSIE's patches "
+                  "alive at each stroke are rebuilt too (--no-patches: not)");
+  cmd->add_flag("--no-patches", o->no_patches,
+                "With --cassie-logs: do not rebuild CASSIE's patches (raw_data allCreatedPatches, meshed by the "
+                "soapfilm surfacer) for each stroke; without them on-surface projection never acts");
   cmd->add_option("--near", o->near,
                   "Distance (m) within which a constraint target is an end's, for --causes (default 0.02)");
   cmd->callback([o, &exit_code] {
@@ -151,6 +157,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     opt.track = o->track;
     opt.snap_tolerance = o->snap_tolerance;
     if (!o->csv_dir.empty()) fs::create_directories(o->csv_dir);
+    std::shared_ptr<Surfacer> surfacer;
+    if (!o->cassie_logs.empty() && !o->no_patches) surfacer = reference_patch_surfacer(host, "soapfilm");
 
     std::map<std::string, std::vector<TeacherForcedStroke>> groups;
     std::map<std::string, std::size_t> group_sessions;
@@ -162,27 +170,32 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, DecisionCounts> decisions;  // by row name
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
+      const std::string session = f.stem().string();
+      opt.surfacer = surfacer.get();
+      opt.patches = surfacer ? cassie_reference_patches(rec, o->cassie_logs, session) : std::vector<ReferencePatch>{};
       std::vector<TeacherForcedStroke> strokes;
+      std::vector<std::string> warnings;
       try {
-        strokes = teacher_forced(rec, *corrector, opt);
+        strokes = teacher_forced(rec, *corrector, opt, &warnings);
       } catch (const std::invalid_argument& e) {
         throw std::runtime_error(f.string() + ": " + e.what() + " (--track chooses one)");
       }
       const std::string group = fidelity_group(rec.header);
-      const std::string session = f.stem().string();
       if (!o->csv_dir.empty()) write_text_file(fs::path(o->csv_dir) / (session + ".csv"), teacher_forced_csv(strokes));
       const bool in_study = group == "Armature" || group == "Patch";
       std::map<StrokeId, CassieConstraintLog> logs;
       if (!o->cassie_logs.empty()) {
-        const auto it = rec.header.source.find("session");
-        logs = read_cassie_constraint_logs(fs::path(o->cassie_logs) /
-                                           ((it == rec.header.source.end() ? session : it->second) + ".json"));
+        logs = read_cassie_constraint_logs(cassie_raw_data_file(rec, o->cassie_logs, session));
         add_mirrored_twin_logs(rec, logs);
         for (const std::string& key : {session, group, std::string(in_study ? "Armature+Patch" : ""), std::string("all")})
           if (!key.empty()) count_decisions(strokes, logs, decisions[key]);
       }
       session_rows.push_back(row(session + " (" + group + ")", 1, summarize(strokes), decisions[session]));
-      std::cerr << session << ": " << strokes.size() << " strokes\n";
+      std::cerr << session << ": " << strokes.size() << " strokes";
+      if (!opt.patches.empty())
+        std::cerr << ", " << opt.patches.size() << " CASSIE patches (" << warnings.size() << " left out)";
+      std::cerr << "\n";
+      for (const std::string& w : warnings) std::cerr << "warning: " << session << ": " << w << "\n";
       auto& g = groups[group];
       g.insert(g.end(), strokes.begin(), strokes.end());
       ++group_sessions[group];

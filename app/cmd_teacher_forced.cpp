@@ -1,13 +1,15 @@
 // `sketchlab teacher-forced RECORDING --corrector NAME [--param k=v ...]
-// [--track cassie] [--csv out.csv]`: corrects every stroke of a recording on
+// [--track cassie] [--csv out.csv] [--cassie-logs DIR [--no-patches]]`: corrects every stroke of a recording on
 // the sketch rebuilt from a reference track and compares with the reference.
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <stdexcept>
 #include <iostream>
 
 #include "commands.hpp"
 #include "plugin_arguments.hpp"
+#include "reference_patches.hpp"
 #include "sketchlab/io/text_file.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
@@ -23,6 +25,8 @@ struct TeacherForcedCliOptions {
   std::string track = "cassie";
   std::string csv;
   double snap_tolerance = 1e-4;
+  std::string cassie_logs;
+  bool no_patches = false;
 };
 
 void print_distribution(const std::string& name, const Distribution& d, double unit, const char* u) {
@@ -46,6 +50,10 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--csv", o->csv, "Write one row per stroke to this CSV file");
   cmd->add_option("--snap-tolerance", o->snap_tolerance,
                   "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
+  cmd->add_option("--cassie-logs", o->cassie_logs,
+                  "CASSIE's raw_data directory: the patches CASSIE had at each stroke (allCreatedPatches, "
+                  "meshed by the soapfilm surfacer) are rebuilt too");
+  cmd->add_flag("--no-patches", o->no_patches, "With --cassie-logs: do not rebuild CASSIE's patches");
   cmd->callback([o, &exit_code] {
     std::map<std::string, ParamValue> params;
     PluginHost host;
@@ -57,15 +65,24 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
     TeacherForcedOptions opt;
     opt.track = o->track;
     opt.snap_tolerance = o->snap_tolerance;
+    std::shared_ptr<Surfacer> surfacer;
+    if (!o->cassie_logs.empty() && !o->no_patches) surfacer = reference_patch_surfacer(host, "soapfilm");
+    if (surfacer) {
+      opt.surfacer = surfacer.get();
+      opt.patches = cassie_reference_patches(rec, o->cassie_logs, std::filesystem::path(o->recording).stem().string());
+    }
     std::vector<TeacherForcedStroke> strokes;
+    std::vector<std::string> warnings;
     try {
-      strokes = teacher_forced(rec, *corrector, opt);
+      strokes = teacher_forced(rec, *corrector, opt, &warnings);
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error(o->recording + ": " + e.what() + " (--track chooses one)");
     }
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
     if (!o->csv.empty()) write_text_file(o->csv, teacher_forced_csv(strokes));
     const TeacherForcedSummary s = summarize(strokes);
     std::cout << "strokes " << s.strokes << "\ncompared " << s.compared << "\nerrors " << s.errors << "\n";
+    if (surfacer) std::cout << "patches " << opt.patches.size() << "\npatches_left_out " << warnings.size() << "\n";
     print_distribution("endpoint_distance", s.endpoint_distance, 1000.0, "mm");
     print_distribution("mean_deviation", s.mean_deviation, 1000.0, "mm");
     print_distribution("max_deviation", s.max_deviation, 1000.0, "mm");

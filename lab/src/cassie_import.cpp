@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "sketchlab/curve.hpp"
+#include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/event.hpp"
 #include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/stroke.hpp"
@@ -380,6 +381,56 @@ std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::f
       *flag = strokes[i][key].get<bool>();
     }
   }
+  return out;
+}
+
+std::vector<CassiePatchLog> read_cassie_patches(const std::filesystem::path& raw_data_json) {
+  const Source src{raw_data_json.string()};
+  const json raw = load_json(raw_data_json);
+  std::vector<CassiePatchLog> out;
+  if (!raw.is_object() || !raw.contains("allCreatedPatches")) return out;
+  const json& patches = src.array(raw["allCreatedPatches"], "top level", "allCreatedPatches");
+  std::map<std::int64_t, std::size_t> index;
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    const std::string where = "allCreatedPatches[" + std::to_string(i) + "]";
+    CassiePatchLog p;
+    const json& jid = src.need(patches[i], "id", where);
+    if (!jid.is_number_integer()) src.fail(where, "field 'id' must be an integer");
+    p.id = jid.get<std::int64_t>();
+    if (!index.emplace(p.id, out.size()).second) src.fail(where, "patch " + std::to_string(p.id) + " listed twice");
+    const json& automatic = src.need(patches[i], "foundByAlgo", where);
+    if (!automatic.is_boolean()) src.fail(where, "field 'foundByAlgo' must be true or false");
+    p.automatic = automatic.get<bool>();
+    const json& ids = src.array(src.need(patches[i], "strokesID", where), where, "strokesID");
+    for (const json& s : ids) {
+      if (!s.is_number_integer() || s.get<std::int64_t>() < 0) src.fail(where, "field 'strokesID' must hold integers >= 0");
+      p.strokes.push_back(static_cast<StrokeId>(s.get<std::int64_t>()));
+    }
+    std::sort(p.strokes.begin(), p.strokes.end());
+    p.strokes.erase(std::unique(p.strokes.begin(), p.strokes.end()), p.strokes.end());
+    out.push_back(std::move(p));
+  }
+  if (!raw.contains("systemStates")) return out;
+  const json& states = src.array(raw["systemStates"], "top level", "systemStates");
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const json a = states[i].is_object() ? states[i].value("interactionType", json()) : json();
+    if (!a.is_number_integer() || (a.get<int>() != 3 && a.get<int>() != 4)) continue;
+    const std::string where = "systemStates[" + std::to_string(i) + "]";
+    const json& element = src.need(states[i], "elementID", where);
+    if (!element.is_number_integer()) src.fail(where, "field 'elementID' must be an integer");
+    const auto it = index.find(element.get<std::int64_t>());
+    if (it == index.end()) continue;  // a patch the export does not list: nothing to rebuild
+    const double t = src.time(src.need(states[i], "time", where), where, "time");
+    std::optional<double>& when = a.get<int>() == 3 ? out[it->second].created : out[it->second].deleted;
+    if (!when || t < *when) when = t;
+  }
+  return out;
+}
+
+std::vector<ReferencePatch> reference_patches(const std::vector<CassiePatchLog>& log) {
+  std::vector<ReferencePatch> out;
+  for (const CassiePatchLog& p : log)
+    if (p.created) out.push_back({p.id, p.strokes, *p.created, p.deleted, p.automatic});
   return out;
 }
 

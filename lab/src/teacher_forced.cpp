@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 
 #include "sketchlab/geometry/arclength.hpp"
 #include "sketchlab/network_curve.hpp"
+#include "sketchlab/network_nodes.hpp"
 
 namespace sketchlab {
 namespace {
@@ -59,6 +61,72 @@ void add_reference(Sketch& sketch, const Pending& p, std::map<StrokeId, CurveId>
   for (auto& [n, node] : replaced) e.nodes_replaced.push_back(node);
   sketch.network.apply(e);
   curve_of[p.stroke] = id;
+}
+
+// The surfacer's patch from an add-patch command on `sub` at the centroid of
+// `joints`, then (a concave cycle's centroid may lie nearer a dangling
+// piece) at the midpoint of each pair of them; without joints, at the
+// centroid of the curves' control points (a closed curve alone).
+std::optional<Patch> walk_patch(const Sketch& sub, const std::vector<Vec3>& joints, Surfacer& surfacer,
+                                std::string& why) {
+  std::vector<Vec3> points(1, Vec3::Zero());
+  if (joints.empty()) {
+    int n = 0;
+    for (const auto& [id, nc] : sub.network.curves())
+      for (const Vec3& q : nc.curve.control_points) points[0] += q, ++n;
+    points[0] /= n;
+  } else {
+    for (const Vec3& q : joints) points[0] += q / static_cast<double>(joints.size());
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      for (std::size_t j = i + 1; j < joints.size(); ++j) points.push_back((joints[i] + joints[j]) / 2);
+  }
+  for (const Vec3& q : points) {
+    SurfaceUpdate u = surfacer.command(sub, AddPatchEvent{q});
+    if (u.error.empty() && !u.edit.patches_added.empty()) return std::move(u.edit.patches_added.front());
+    if (why.empty()) why = u.error.empty() ? "the surfacer made no patch" : u.error;
+  }
+  return std::nullopt;
+}
+
+// The reference patch over `curves`, meshed by `surfacer` (TeacherForcedOptions):
+// the surfacer sees only these curves (same ids) and their nodes with the
+// incidences among them, so its walk can follow no other curve; failing
+// that, also with nodes where a joint of one lies within `junction` of
+// another (CASSIE's graph joins curves there; add_reference does not).
+// Empty with `why` set when neither gives a patch.
+std::optional<Patch> mesh_reference_patch(const Sketch& sketch, const std::set<CurveId>& curves,
+                                          double junction, Surfacer& surfacer, std::string& why) {
+  Sketch sub;
+  sub.workspace = sketch.workspace;
+  Edit e;
+  std::vector<Vec3> joints;
+  for (CurveId c : curves) e.curves_added.push_back(*sketch.network.find_curve(c));
+  for (const auto& [id, node] : sketch.network.nodes()) {
+    Node kept{node};
+    std::erase_if(kept.incidences, [&](const NodeIncidence& i) { return !curves.count(i.curve); });
+    if (kept.incidences.size() < 2) continue;
+    e.nodes_added.push_back(kept);
+    joints.push_back(node.position);
+  }
+  sub.network.apply(e);
+  if (auto patch = walk_patch(sub, joints, surfacer, why)) return patch;
+  const std::size_t exact = joints.size();
+  Edit near;
+  NodeId next = std::max(sub.network.next_node_id(), sketch.network.next_node_id());
+  for (CurveId c : curves) {
+    const Curve& curve = sub.network.find_curve(c)->curve;
+    for (int k = 0; k <= curve.segment_count(); ++k)
+      connect_point(sub.network, curve.control_points[3 * k], c, k, junction, near, next);
+  }
+  if (!near.nodes_added.empty()) {
+    sub.network.apply(near);
+    for (const Node& n : near.nodes_added) joints.push_back(n.position);
+    if (auto patch = walk_patch(sub, joints, surfacer, why)) return patch;
+  }
+  why += " (its " + std::to_string(curves.size()) + " curves meet at " + std::to_string(exact) + " nodes, " +
+         std::to_string(joints.size() - exact) + " more within " + std::to_string(junction * 1000).substr(0, 4) +
+         " mm)";
+  return std::nullopt;
 }
 
 std::string snap_kind(const Sketch& sketch, const Vec3& p, double tol) {
@@ -124,8 +192,12 @@ std::vector<std::string> reference_tracks(const Recording& rec) {
 }
 
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector& corrector,
-                                                const TeacherForcedOptions& opt) {
+                                                const TeacherForcedOptions& opt, std::vector<std::string>* warnings) {
   if (opt.resample < 2) throw std::invalid_argument("teacher_forced: resample must be >= 2");
+  if (!opt.patches.empty() && !opt.surfacer)
+    throw std::invalid_argument("teacher_forced: reference patches need a surfacer to mesh them");
+  if (!(opt.patch_junction >= 0))
+    throw std::invalid_argument("teacher_forced: patch_junction must be >= 0 (metres)");
   if (!(opt.snap_tolerance >= 0)) throw std::invalid_argument("teacher_forced: snap tolerance must be >= 0");
   std::map<StrokeId, Curve> reference;
   for (const Event& e : rec.events)
@@ -147,6 +219,22 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
   std::vector<Pending> pending;
   std::map<StrokeId, CurveId> curve_of;
   std::vector<TeacherForcedStroke> out;
+  // Reference patches not made yet (by creation time) and those in the
+  // sketch (reference id -> ours).
+  std::vector<const ReferencePatch*> waiting;
+  for (const ReferencePatch& p : opt.patches) waiting.push_back(&p);
+  std::stable_sort(waiting.begin(), waiting.end(),
+                   [](const ReferencePatch* a, const ReferencePatch* b) { return a->created < b->created; });
+  std::map<const ReferencePatch*, PatchId> made;
+  std::map<StrokeId, double> deleted;  // stroke -> deletion time
+  auto warn = [&](const ReferencePatch& p, const std::string& why) {
+    if (warnings) warnings->push_back("patch " + std::to_string(p.id) + ": " + why);
+  };
+  auto remove_patch = [&](PatchId id) {
+    Edit del;
+    del.patches_removed.push_back(id);
+    sketch.network.apply(del);
+  };
   auto flush = [&](double before) {
     std::vector<Pending> keep;
     for (const Pending& p : pending) {
@@ -154,12 +242,56 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
       else keep.push_back(p);
     }
     pending = std::move(keep);
+    for (auto it = made.begin(); it != made.end();) {
+      if (it->first->deleted && *it->first->deleted < before) {
+        remove_patch(it->second);
+        it = made.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    std::erase_if(waiting, [&](const ReferencePatch* p) {
+      if (!(p->created < before)) return false;
+      if (p->deleted && *p->deleted < before) return true;  // made and deleted between two strokes
+      std::set<CurveId> curves;
+      for (StrokeId s : p->strokes) {
+        if (const auto d = deleted.find(s); d != deleted.end()) {  // gone with it (item 27), or never had it
+          if (d->second <= p->created) warn(*p, "stroke " + std::to_string(s) + " was deleted before it");
+          return true;
+        }
+        const auto c = curve_of.find(s);
+        if (c == curve_of.end()) {
+          if (!reference.count(s)) return warn(*p, "stroke " + std::to_string(s) + " has no reference curve"), true;
+          return false;  // its stroke's curve is still to come
+        }
+        curves.insert(c->second);
+      }
+      std::string why;
+      auto patch = mesh_reference_patch(sketch, curves, opt.patch_junction, *opt.surfacer, why);
+      if (!patch) return warn(*p, why), true;
+      patch->id = sketch.network.next_patch_id();
+      patch->automatic = p->automatic;
+      Edit add;
+      add.patches_added.push_back(std::move(*patch));
+      sketch.network.apply(add);
+      made[p] = add.patches_added.front().id;
+      return true;
+    });
   };
   for (const Event& e : rec.events) {
     if (const auto* w = std::get_if<WorkspaceEvent>(&e.payload)) {
       sketch.workspace = w->workspace;
     } else if (const auto* d = std::get_if<DeleteStrokeEvent>(&e.payload)) {
       std::erase_if(pending, [&](const Pending& p) { return p.stroke == d->stroke; });
+      deleted.emplace(d->stroke, e.time);
+      // A patch goes with any of its strokes (CASSIE app, item 27), also one
+      // whose curve the surfacer's cycle did not use.
+      std::erase_if(made, [&](const auto& m) {
+        const auto& st = m.first->strokes;
+        if (std::find(st.begin(), st.end(), d->stroke) == st.end()) return false;
+        if (sketch.network.patches().count(m.second)) remove_patch(m.second);
+        return true;
+      });
       if (auto it = curve_of.find(d->stroke); it != curve_of.end()) {
         Edit del;
         del.curves_removed.push_back(it->second);
@@ -177,6 +309,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
         r.error = why;
       } else {
         sketch.workspace.scale = stroke.workspace_scale;
+        r.patches = static_cast<int>(sketch.network.patches().size());
         const auto start = std::chrono::steady_clock::now();
         const double cpu_start = thread_cpu_ms();
         const Correction c = corrector.correct(stroke, sketch);

@@ -1,5 +1,6 @@
 // What the CLI prints for people: the plugin table, its errors, usage lines,
-// and teacher-forced refusing a recording it cannot compare.
+// and teacher-forced refusing a recording it cannot compare, and rebuilding
+// CASSIE's patches from its logs.
 #include <catch2/catch.hpp>
 
 #include <regex>
@@ -65,6 +66,21 @@ TEST_CASE("teacher-forced without the requested track fails naming the tracks th
       test::run_captured(cli() + " teacher-forced " + synth.string() + " --corrector freehand --track ground_truth");
   CHECK(right.status == 0);
   CHECK_THAT(right.output, Catch::Contains("compared "));
+}
+
+TEST_CASE("teacher-forced --cassie-logs rebuilds CASSIE's patches unless --no-patches", "[app][cli]") {
+  const std::string base = cli() + " teacher-forced " + test::source_path("data/recordings/flower.jsonl") +
+                           " --corrector cassie --param mirror=plane --cassie-logs " +
+                           test::source_path("data/cassie/raw_data");
+  const auto with = test::run_captured(base);
+  REQUIRE(with.status == 0);
+  CHECK_THAT(with.output, Catch::Contains("patches 93\n") && Catch::Contains("patches_left_out 0\n"));
+  const auto without = test::run_captured(base + " --no-patches");
+  REQUIRE(without.status == 0);
+  CHECK_THAT(without.output, !Catch::Contains("patches "));
+  const auto missing = test::run_captured(base + "/nowhere");
+  CHECK(missing.status != 0);
+  CHECK_THAT(missing.output, Catch::Contains("nowhere/flower.json"));
 }
 
 TEST_CASE("view takes overrides as positional key.path=value, as run and vr do", "[app][cli]") {

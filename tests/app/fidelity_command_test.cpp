@@ -147,7 +147,9 @@ TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind di
   const std::string rec = test::source_path("data/recordings/02-2-2.jsonl");  // Patch, CASSIE logs both lists
   const std::string base = std::string(SKETCHLAB_CLI) + " fidelity " + rec +
                            " --corrector cassie --param mirror=plane --causes --csv-dir " + (dir / "csv").string();
-  const auto with_logs = test::run_captured(base + " --cassie-logs " + test::source_path("data/cassie/raw_data"));
+  // Without CASSIE's patches, so that the run without logs corrects the same.
+  const auto with_logs =
+      test::run_captured(base + " --no-patches --cassie-logs " + test::source_path("data/cassie/raw_data"));
   INFO(with_logs.output);
   REQUIRE(with_logs.status == 0);
   const std::size_t expected = kind_mismatches(dir / "csv" / "02-2-2.csv");
@@ -204,6 +206,13 @@ TEST_CASE("sketchlab fidelity --cassie-logs compares CASSIE's planar and closed 
   CHECK(strokes > 50);
   CHECK(both + cassie_only + ours_only + neither == strokes);
   CHECK(r.output.find("closed  ", table) == std::string::npos);
+  // CASSIE's patches are rebuilt by default with the logs (soapfilm meshes
+  // them): its 89 patches of this session, and strokes we project onto them.
+  CHECK(r.output.find("02-2-2: 107 strokes, 89 CASSIE patches (") != std::string::npos);
+  std::istringstream on(r.output.substr(r.output.find("on surface ", table) + std::string("on surface").size()));
+  std::size_t on_strokes = 0, on_both = 0, on_cassie = 0, on_ours = 0;
+  on >> on_strokes >> on_both >> on_cassie >> on_ours;
+  CHECK(on_both + on_ours > 0);
   CHECK(r.output.find("planar in both (" + std::to_string(both) + "): control points to our plane", table) !=
         std::string::npos);
   // Without logs the columns are empty.

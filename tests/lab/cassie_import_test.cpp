@@ -363,3 +363,35 @@ TEST_CASE("CASSIE's constraint logs are read per stroke from raw_data", "[record
                     Catch::Contains("flag.json") && Catch::Contains("allSketchedStrokes[0]") &&
                         Catch::Contains("'planar' must be true or false"));
 }
+
+TEST_CASE("CASSIE's patch log is read from raw_data", "[recording][cassie]") {
+  const auto patches = read_cassie_patches(cassie_dir() / "raw_data" / "02-2-1.json");
+  REQUIRE(patches.size() == 49);
+  std::size_t automatic = 0, created = 0;
+  for (const CassiePatchLog& p : patches) automatic += p.automatic, created += p.created.has_value();
+  CHECK(automatic == 42);
+  CHECK(created == 49);
+  CHECK(patches[1].id == 1);
+  CHECK(patches[1].strokes == std::vector<StrokeId>{0, 1, 2, 3, 4, 5});  // sorted
+  CHECK(patches[1].created == Approx(531.73175));
+  CHECK(!patches[1].deleted);
+  CHECK(read_cassie_patches(cassie_dir() / "raw_data" / "01-0-1.json").empty());  // Freehand: none
+
+  const std::filesystem::path dir = test::binary_path("tests/scratch/cassie_patches");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bad.json", std::ios::trunc)
+      << R"({"allCreatedPatches":[{"id":0,"foundByAlgo":1,"strokesID":[0]}]})";
+  CHECK_THROWS_WITH(read_cassie_patches(dir / "bad.json"),
+                    Catch::Contains("bad.json") && Catch::Contains("allCreatedPatches[0]") &&
+                        Catch::Contains("'foundByAlgo' must be true or false"));
+  std::ofstream(dir / "deleted.json", std::ios::trunc)
+      << R"({"allCreatedPatches":[{"id":5,"foundByAlgo":false,"strokesID":[2,1,2]}],
+            "systemStates":[{"interactionType":3,"elementID":5,"time":2.0},
+                            {"interactionType":4,"elementID":5,"time":3.5}]})";
+  const auto d = read_cassie_patches(dir / "deleted.json");
+  REQUIRE(d.size() == 1);
+  CHECK(!d[0].automatic);
+  CHECK(d[0].strokes == std::vector<StrokeId>{1, 2});
+  CHECK(d[0].created == 2.0);
+  CHECK(d[0].deleted == 3.5);
+}

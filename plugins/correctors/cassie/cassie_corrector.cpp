@@ -222,7 +222,13 @@ void project_on_patches(Context& cx, CorrectedStroke& cs) {
     anchors.push_back(static_cast<int>(std::lround(3 * pl.t)));
     if (is_intersection(cs.constraints[pl.constraint])) hits.push_back(cs.constraints[pl.constraint].curve);
   }
-  const auto proj = project_on_surface(cx.sketch.network, cs.curve.control_points, anchors, hits, cx.th.surface);
+  std::vector<Vec3> brush;  // item 6: a curve in contact is the main collider, not the patch
+  if (cx.params.surface_touch == SurfaceTouch::brush)
+    for (const Sample& s : cx.stroke.samples)
+      if (cx.sketch.network.curves_near(s.position, cx.th.contact).empty()) brush.push_back(s.position);
+  const auto proj = project_on_surface(cx.sketch.network, cs.curve.control_points, anchors, hits, cx.th.surface,
+                                       cx.params.surface_touch == SurfaceTouch::brush ? &brush : nullptr,
+                                       cx.th.brush);
   if (!proj) return;
   double moved = 0.0;
   for (std::size_t i = 0; i < proj->control_points.size(); ++i)

@@ -140,6 +140,12 @@ const ParamTable<Settings>& parameters() {
                 "project control points this close onto a patch (item 20: 2.5δ; thesis text 2δ)")
           .boolean("on_surface", c(&C::on_surface),
                    "project strokes drawn on a patch onto it (item 20)")
+          .choice("surface_touch", c(&C::surface_touch),
+                  std::vector<std::pair<std::string, SurfaceTouch>>{{"brush", SurfaceTouch::brush},
+                                                                    {"control_points", SurfaceTouch::control_points}},
+                  "brush: the patch is touched when a raw hand position is within the brush radius of its mesh "
+                  "away from every curve's collider (items 6, 20); control_points: when a control point is "
+                  "within surface_snap")
           .choice("mirror", c(&C::mirror),
                   std::vector<std::pair<std::string, MirrorMode>>{
                       {"workspace", MirrorMode::workspace}, {"plane", MirrorMode::plane}, {"off", MirrorMode::off}},

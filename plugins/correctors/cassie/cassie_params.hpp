@@ -46,6 +46,12 @@ enum class PlanarityTest {
   snapped,  // the plane after its normal was snapped to an axis
 };
 
+// Item 20: what counts as the brush colliding with a patch. brush: a raw
+// hand position within the brush radius of the patch's mesh while touching
+// no curve's collider (a curve, not the patch, is then the brush's main
+// collider: item 6); control_points: a control point within surface_snap.
+enum class SurfaceTouch { brush, control_points };
+
 struct CassieParams {
   double delta = 0.02;                   // m, δ at zoom 1 (thesis §3.2.3.1)
   double angle = std::numbers::pi / 6;   // rad, θ (thesis §3.2.3.1)
@@ -92,6 +98,7 @@ struct CassieParams {
   double mirror_on_plane_factor = 0.1;   // ×δ, an intersection "on the plane"
   double surface_factor = 2.5;           // ×δ, control points projected onto a patch
   bool on_surface = true;
+  SurfaceTouch surface_touch = SurfaceTouch::brush;
   MirrorMode mirror = MirrorMode::workspace;
   PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
   double input_spacing_factor = 0.0;     // ×δ, densify the samples first (input_density.hpp; 0: off)

@@ -29,6 +29,19 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   return a + ab * (vb / den) + ac * (vc / den);
 }
 
+// p within r of the mesh whose bounding box is `box`.
+bool within(const Mesh& mesh, const Box3& box, const Vec3& p, double r) {
+  if (mesh.faces.empty() || box.exteriorDistance(p) > r) return false;
+  const auto m = closest_on_mesh(mesh, p);
+  return m && m->distance <= r;
+}
+
+Box3 mesh_box(const Mesh& mesh) {
+  Box3 box;
+  for (const Vec3& v : mesh.vertices) box.extend(v);
+  return box;
+}
+
 }  // namespace
 
 std::optional<MeshPoint> closest_on_mesh(const Mesh& mesh, const Vec3& p) {
@@ -51,20 +64,26 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<Vec3>& points,
                                                     const std::vector<int>& anchors,
                                                     const std::vector<CurveId>& intersections,
-                                                    double max_distance) {
+                                                    double max_distance, const std::vector<Vec3>* brush,
+                                                    double brush_radius) {
   if (points.empty()) return std::nullopt;
   for (const auto& [id, patch] : network.patches()) {
     if (patch.mesh.faces.empty()) continue;
-    std::vector<std::optional<MeshPoint>> near(points.size());
+    const Box3 bounds = mesh_box(patch.mesh);
     bool touched = false;
+    if (brush) {
+      touched = std::any_of(brush->begin(), brush->end(),
+                            [&](const Vec3& b) { return within(patch.mesh, bounds, b, brush_radius); });
+      if (!touched) continue;
+    }
+    std::vector<std::optional<MeshPoint>> near(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
       near[i] = closest_on_mesh(patch.mesh, points[i]);
-      if (near[i] && near[i]->distance <= max_distance) touched = true;
+      if (near[i] && near[i]->distance <= max_distance) touched = true;  // with `brush`: already
       else near[i].reset();
     }
     if (!touched) continue;
-    Box3 box;
-    for (const Vec3& v : patch.mesh.vertices) box.extend(v);
+    Box3 box = bounds;
     box.min().array() -= max_distance;
     box.max().array() += max_distance;
     bool whole = std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return box.contains(p); });

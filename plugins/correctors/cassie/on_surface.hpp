@@ -26,8 +26,9 @@ struct SurfaceProjection {
 };
 
 // Item 20 (`Beautifier.ProjectOnSurfaces`). The patch is the first (by id)
-// with a control point within `max_distance` of its mesh (the brush touched
-// it). The whole stroke (each control point within `max_distance`) is
+// the brush touched: with `brush` (hand positions away from every curve's
+// collider), one of them within `brush_radius` of its mesh; without it, a
+// control point within `max_distance` of its mesh. The whole stroke (each control point within `max_distance`) is
 // projected when the patch spans it (its box grown by max_distance holds
 // every control point), every constrained anchor (`anchors`: control point
 // indices) is on the patch (within max_distance) and the stroke meets the
@@ -38,6 +39,8 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<Vec3>& points,
                                                     const std::vector<int>& anchors,
                                                     const std::vector<CurveId>& intersections,
-                                                    double max_distance);
+                                                    double max_distance,
+                                                    const std::vector<Vec3>* brush = nullptr,
+                                                    double brush_radius = 0.0);
 
 }  // namespace sketchlab::cassie

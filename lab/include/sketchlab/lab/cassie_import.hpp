@@ -38,6 +38,7 @@
 //   stroke or its mirrored twin after its creation; without one the stroke is
 //   never deleted.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -49,6 +50,8 @@
 #include "sketchlab/types.hpp"
 
 namespace sketchlab {
+
+struct ReferencePatch;  // teacher_forced.hpp
 
 // Imports one session from the two files. `session` names it in the header;
 // `warnings`, when given, receives the warnings above. Throws
@@ -83,6 +86,29 @@ struct CassieConstraintLog {
 // malformed JSON or a missing/mistyped field (a flag must be true or false);
 // sessions without allSketchedStrokes give an empty map.
 std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::filesystem::path& raw_data_json);
+
+// A patch of CASSIE's log (raw_data allCreatedPatches, with the times of its
+// add-surface and delete-surface entries in systemStates, interactionType 3
+// and 4, elementID = the patch id).
+struct CassiePatchLog {
+  std::int64_t id = 0;
+  bool automatic = true;             // foundByAlgo
+  std::vector<StrokeId> strokes;     // strokesID, sorted, duplicates merged
+  std::optional<double> created;     // first add-surface entry (s); unset: never logged
+  std::optional<double> deleted;     // first delete-surface entry (s): deleted by hand
+};
+
+// Reads the patches of a raw_data/<session>.json in allCreatedPatches order.
+// Throws std::runtime_error naming the file, the element and the field for
+// malformed JSON or a missing/mistyped field (foundByAlgo true or false,
+// strokesID integers >= 0, a time in [0, 1e9] s); sessions without
+// allCreatedPatches (older exports, Freehand/Armature) give none.
+std::vector<CassiePatchLog> read_cassie_patches(const std::filesystem::path& raw_data_json);
+
+// The patches of the log for the teacher-forced rebuild (teacher_forced.hpp):
+// every one with an add-surface time (automatic and manual: CASSIE app,
+// item 26), from then until deleted by hand (or, item 27, with a stroke).
+std::vector<ReferencePatch> reference_patches(const std::vector<CassiePatchLog>& log);
 
 struct GridInference {
   bool found = false;

@@ -13,15 +13,33 @@
 // accumulate: every stroke starts from the reference history.
 // Undo/redo/patch events are not replayed (imported CASSIE sessions have none).
 // Reference curves go on their stroke's layer.
+// Reference patches (options.patches, e.g. CASSIE's patch log:
+// read_cassie_patches) are teacher-forced the same way: each stroke sees the
+// patches the reference had when it was drawn, each meshed by a surfacer
+// over the reference curves of its strokes.
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/plugin/corrector.hpp"
+#include "sketchlab/plugin/surfacer.hpp"
 #include "sketchlab/recording/recording.hpp"
 
 namespace sketchlab {
+
+// A patch of the reference system over the reference curves of `strokes`:
+// in the rebuilt sketch from `created` (strictly earlier strokes do not see
+// it) until `deleted` or until one of its strokes is deleted.
+struct ReferencePatch {
+  std::int64_t id = 0;  // the reference's own id (warnings name it)
+  std::vector<StrokeId> strokes;
+  double created = 0.0;
+  std::optional<double> deleted;
+  bool automatic = true;
+};
 
 struct TeacherForcedOptions {
   std::string track = "cassie";
@@ -30,6 +48,20 @@ struct TeacherForcedOptions {
   // on). The same test is applied to reference and corrected curves.
   double snap_tolerance = 1e-4;
   int resample = 32;  // points per curve for the deviation (by arclength), >= 2
+  // Reference patches and the surfacer that meshes them (not owned; both or
+  // neither). A patch is meshed once, when the first stroke after its
+  // creation is drawn: the surfacer gets a sketch holding only the curves of
+  // its strokes (same ids, nodes where they meet each other) and an
+  // AddPatchEvent at the centroid of those nodes, and the patch it adds goes
+  // into the rebuilt sketch. A patch the surfacer cannot make (or one over a
+  // stroke without a reference curve) is left out with a warning.
+  std::vector<ReferencePatch> patches;
+  Surfacer* surfacer = nullptr;
+  // In that sketch, a joint of one of the patch's curves within this (m) of
+  // another of them is a node too: CASSIE's graph joins curves whose ends
+  // stop up to a few mm off (vintage_car: 0.2-2.6 mm), where the rebuilt
+  // network, with nodes only at exact joints, does not.
+  double patch_junction = 3e-3;
 };
 
 struct TeacherForcedStroke {
@@ -62,6 +94,7 @@ struct TeacherForcedStroke {
   std::vector<Constraint> constraints;  // the corrector's, as it returned them
   double latency_ms = 0.0;  // wall time of Corrector::correct
   double cpu_ms = 0.0;      // CPU time of the calling thread in it (thread_cpu_ms)
+  int patches = 0;          // patches in the rebuilt sketch when it was corrected
 };
 
 // CPU time consumed by the calling thread (ms, CLOCK_THREAD_CPUTIME_ID): on a
@@ -73,9 +106,12 @@ std::vector<std::string> reference_tracks(const Recording& recording);
 
 // Throws std::invalid_argument for resample < 2, a negative tolerance, or a
 // recording without reference curves on options.track (the message names
-// the tracks it has).
+// the tracks it has), or patches without a surfacer, or a negative
+// patch_junction. `warnings`, when given,
+// receives one line per reference patch left out (its id and why).
 std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corrector& corrector,
-                                                const TeacherForcedOptions& options = {});
+                                                const TeacherForcedOptions& options = {},
+                                                std::vector<std::string>* warnings = nullptr);
 
 struct TeacherForcedSummary {
   std::size_t strokes = 0, compared = 0, errors = 0;

@@ -63,3 +63,21 @@ TEST_CASE("Item 20: a stroke leaving the patch has only its ends projected", "[c
   CHECK(std::abs(out.control_points.front().z()) < 1e-12);
   CHECK(out.control_points.back().z() > 0.25);
 }
+
+TEST_CASE("Items 6 and 20: a brush on a boundary curve does not touch the patch", "[cassie][surface]") {
+  const Sketch sketch = square_patch();
+  // Along the border y = -0.2, 1 cm above it, wavy: every hand position is in
+  // the collider of curve 1 (the curve is the brush's main collider), while
+  // the control points are within 2.5δ of the patch.
+  const Stroke s = make_stroke(1, 60, [](double u) {
+    return Vec3(-0.15 + 0.3 * u, -0.2 + 0.005 * std::sin(7.0 * u), 0.01);
+  }, 2.0);
+  const Correction brush = correct_stroke(s, sketch, CassieParams{});
+  REQUIRE(brush.error.empty());
+  CHECK(brush.stats.extra.count("on_surface_patch") == 0);
+  CassieParams by_points;
+  by_points.surface_touch = SurfaceTouch::control_points;
+  const Correction points = correct_stroke(s, sketch, by_points);
+  REQUIRE(points.error.empty());
+  CHECK(points.stats.extra.count("on_surface_patch") == 1);
+}
