@@ -16,7 +16,7 @@ struct ManualPatchParams {
   double search_radius = 10.0;   // m; farthest curve considered
   // CASSIE app, item 26: the walk gives up after this many turns where the
   // arriving and leaving tangents differ (cos < turn_cos); 0: no limit.
-  int max_turns = 0;
+  int max_turns = 10;
   double turn_cos = 0.8;
   // Item 26's "manifold first": among the segments at a node, those bounding
   // fewer than two patches are taken before the nearer others.
