@@ -301,7 +301,12 @@ struct EyeScale {
 std::optional<EyeScale> eye_scale_aligned_distance(const Sketch& sketch, const std::map<StrokeId, Curve>& truth,
                                                    const std::vector<StrokeId>& strokes, const MetricsOptions& o,
                                                    CaseMetrics& m) {
-  const auto eye = single_eye(sketch, strokes);
+  // Every stroke of the session, not only those whose curve is kept: a curve
+  // taken over by an oversketch from a second view (JustDrawIt §4.4) keeps
+  // that view's stroke only, yet the first view still fixed the scale.
+  std::vector<StrokeId> drawn;
+  for (const auto& [id, stroke] : sketch.strokes) drawn.push_back(id);
+  const auto eye = single_eye(sketch, drawn);
   if (!eye || strokes.empty()) return std::nullopt;
   std::vector<std::pair<Vec3, const Curve*>> points;  // output sample - eye, its intended curve
   double ours_range = 0, truth_range = 0;

@@ -48,7 +48,10 @@ namespace {
 // the intended curve.
 class EyeScaledCorrector : public Corrector {
  public:
-  EyeScaledCorrector(std::map<StrokeId, Curve> truth, double scale) : truth_(std::move(truth)), scale_(scale) {}
+  // take_over: each stroke's curve replaces the curves drawn before it (an
+  // oversketch taking over a curve, JustDrawIt §4.4).
+  EyeScaledCorrector(std::map<StrokeId, Curve> truth, double scale, bool take_over = false)
+      : truth_(std::move(truth)), scale_(scale), take_over_(take_over) {}
   StrokeSpace stroke_space() const override { return StrokeSpace::pixels; }
   Correction correct(const Stroke& stroke, const Sketch& sketch) override {
     Curve c = truth_.at(stroke.id);
@@ -60,18 +63,21 @@ class EyeScaledCorrector : public Corrector {
     nc.source_stroke = stroke.id;
     Correction out;
     out.edit.curves_added.push_back(nc);
+    if (take_over_)
+      for (const auto& [id, old] : sketch.network.curves()) out.edit.curves_removed.push_back(id);
     return out;
   }
 
  private:
   std::map<StrokeId, Curve> truth_;
   double scale_;
+  bool take_over_;
 };
 
-ReplayResult eye_scaled_case(double scale, bool second_eye) {
+ReplayResult eye_scaled_case(double scale, bool second_eye, bool take_over = false) {
   const std::map<StrokeId, Curve> truth{{1, make_line({0, 1, 0}, {0.3, 1, 0})},
                                         {2, make_line({0.3, 1, 0}, {0.3, 1.3, 0.1})}};
-  ReplayResult r{"eye", RecordingHeader{}, Session(Workspace{}, std::make_shared<EyeScaledCorrector>(truth, scale), nullptr), {}};
+  ReplayResult r{"eye", RecordingHeader{}, Session(Workspace{}, std::make_shared<EyeScaledCorrector>(truth, scale, take_over), nullptr), {}};
   for (const auto& [id, curve] : truth) {
     View v;
     const Vec3 eye = (second_eye && id == 2) ? Vec3(-0.8, 1.6, 0.9) : Vec3(0.6, 1.5, 1.0);
@@ -104,6 +110,12 @@ TEST_CASE("the eye-scale alignment removes exactly the scale one view leaves ope
   CHECK(two.values.count("gt_distance_mean_m") == 1);
   CHECK(two.values.count("gt_distance_mean_aligned_eye_scale_m") == 0);
   CHECK(two.values.count("gt_shape_distance_mean_aligned_eye_scale_m") == 0);
+  // Still none when the second view's stroke took over the first's curve:
+  // the live strokes share one eye, the session does not.
+  const CaseMetrics over = compute_metrics(eye_scaled_case(0.4, true, true));
+  CHECK(over.values.at("curves") == 1);
+  CHECK(over.values.count("gt_distance_mean_m") == 1);
+  CHECK(over.values.count("gt_distance_mean_aligned_eye_scale_m") == 0);
 }
 
 namespace {

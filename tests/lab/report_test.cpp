@@ -244,6 +244,10 @@ TEST_CASE("metric glossary: families, display units and readable numbers", "[lab
   CHECK(recall.group == "relations");
   CHECK(recall.label == "parallel R");
   CHECK(metric_info("gt_equal_length_precision").label == "equal_length P");
+  // Issue 19: the report says which ground-truth distance is raw and which aligned.
+  CHECK(metric_info("gt_distance_mean_m").label == "dist. mean (raw)");
+  CHECK(metric_info("gt_distance_mean_aligned_eye_scale_m").label == "dist. mean (aligned)");
+  CHECK(metric_info("gt_shape_distance_mean_aligned_eye_scale_m").label == "shape dist. (aligned)");
   CHECK(metric_info("enforced_coincident_residual_mean").label == "coincident");
   CHECK(metric_info("latency_p95_ms").unit == "ms");
   const MetricInfo unknown = metric_info("new_thing_m");

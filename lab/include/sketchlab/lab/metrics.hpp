@@ -52,8 +52,9 @@ struct PrecisionRecall {
 //   gt_eye_scale: the same after the best uniform scaling of the output about
 //     the camera eye (gt_eye_scale = that factor), which leaves every pixel of
 //     the view unchanged: the depth/scale one view cannot determine. Present
-//     only when every compared stroke is a 2D stroke seen from one eye (with
-//     two or more eye positions the views fix the scale: use the raw figure)
+//     only when every stroke of the session (kept or not) is a 2D stroke seen
+//     from one eye (with two or more eye positions the views fix the scale:
+//     use the raw figure)
 //   gt_<kind>_precision, gt_<kind>_recall: relations of the track's
 //     RelationEvents against those measured on the output over all pairs of
 //     live strokes (touching within distance_tolerance, of the eye-scaled
