@@ -226,9 +226,11 @@ void project_on_patches(Context& cx, CorrectedStroke& cs) {
   if (cx.params.surface_touch == SurfaceTouch::brush)
     for (const Sample& s : cx.stroke.samples)
       if (cx.sketch.network.curves_near(s.position, cx.th.contact).empty()) brush.push_back(s.position);
-  const auto proj = project_on_surface(cx.sketch.network, cs.curve.control_points, anchors, hits, cx.th.surface,
-                                       cx.params.surface_touch == SurfaceTouch::brush ? &brush : nullptr,
-                                       cx.th.brush);
+  // Item 20: "the whole stroke only if the patch spans it", read from the hand (surface_span).
+  const SurfaceBrush hand{cx.params.surface_touch == SurfaceTouch::brush ? &brush : nullptr,
+                          {cx.stroke.samples.front().position, cx.stroke.samples.back().position}, cx.th.brush,
+                          cx.params.surface_span};
+  const auto proj = project_on_surface(cx.sketch.network, cs.curve.control_points, anchors, hits, cx.th.surface, hand);
   if (!proj) return;
   double moved = 0.0;
   for (std::size_t i = 0; i < proj->control_points.size(); ++i)

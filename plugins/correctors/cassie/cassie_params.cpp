@@ -146,6 +146,14 @@ const ParamTable<Settings>& parameters() {
                   "brush: the patch is touched when a raw hand position is within the brush radius of its mesh "
                   "away from every curve's collider (items 6, 20); control_points: when a control point is "
                   "within surface_snap")
+          .choice("surface_span", c(&C::surface_span),
+                  std::vector<std::pair<std::string, SurfaceSpan>>{{"box", SurfaceSpan::box},
+                                                                   {"stroke_ends", SurfaceSpan::stroke_ends},
+                                                                   {"brush", SurfaceSpan::brush}},
+                  "when the patch spans the stroke, which is then projected whole (item 20). box: the mesh's "
+                  "box grown by surface_snap holds every control point; stroke_ends: also the stroke's first and "
+                  "last hand positions are within the brush radius of the mesh; brush: also every hand position "
+                  "away from the curves is")
           .choice("mirror", c(&C::mirror),
                   std::vector<std::pair<std::string, MirrorMode>>{
                       {"workspace", MirrorMode::workspace}, {"plane", MirrorMode::plane}, {"off", MirrorMode::off}},

@@ -52,6 +52,13 @@ enum class PlanarityTest {
 // collider: item 6); control_points: a control point within surface_snap.
 enum class SurfaceTouch { brush, control_points };
 
+// Item 20's "the patch spans it", which the reference leaves open. box: the
+// patch's bounding box, grown by max_distance, holds every control point;
+// stroke_ends: also the stroke's first and last hand positions are within
+// the brush radius of the mesh; brush: also every hand position away from the
+// curves (on_surface.hpp's `SurfaceBrush::away`) is (README, "CASSIE's patches in the rebuild").
+enum class SurfaceSpan { box, stroke_ends, brush };
+
 struct CassieParams {
   double delta = 0.02;                   // m, δ at zoom 1 (thesis §3.2.3.1)
   double angle = std::numbers::pi / 6;   // rad, θ (thesis §3.2.3.1)
@@ -99,6 +106,7 @@ struct CassieParams {
   double surface_factor = 2.5;           // ×δ, control points projected onto a patch
   bool on_surface = true;
   SurfaceTouch surface_touch = SurfaceTouch::brush;
+  SurfaceSpan surface_span = SurfaceSpan::brush;
   MirrorMode mirror = MirrorMode::workspace;
   PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
   double input_spacing_factor = 0.0;     // ×δ, densify the samples first (input_density.hpp; 0: off)

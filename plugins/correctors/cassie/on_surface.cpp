@@ -64,16 +64,15 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<Vec3>& points,
                                                     const std::vector<int>& anchors,
                                                     const std::vector<CurveId>& intersections,
-                                                    double max_distance, const std::vector<Vec3>* brush,
-                                                    double brush_radius) {
+                                                    double max_distance, const SurfaceBrush& brush) {
   if (points.empty()) return std::nullopt;
   for (const auto& [id, patch] : network.patches()) {
     if (patch.mesh.faces.empty()) continue;
     const Box3 bounds = mesh_box(patch.mesh);
     bool touched = false;
-    if (brush) {
-      touched = std::any_of(brush->begin(), brush->end(),
-                            [&](const Vec3& b) { return within(patch.mesh, bounds, b, brush_radius); });
+    const auto on_patch = [&](const Vec3& b) { return within(patch.mesh, bounds, b, brush.radius); };
+    if (brush.away) {
+      touched = std::any_of(brush.away->begin(), brush.away->end(), on_patch);
       if (!touched) continue;
     }
     std::vector<std::optional<MeshPoint>> near(points.size());
@@ -87,6 +86,10 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
     box.min().array() -= max_distance;
     box.max().array() += max_distance;
     bool whole = std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return box.contains(p); });
+    // Item 20, "the patch spans it": see SurfaceSpan.
+    if (brush.span != SurfaceSpan::box) whole = whole && on_patch(brush.ends[0]) && on_patch(brush.ends[1]);
+    if (brush.span == SurfaceSpan::brush && brush.away)
+      whole = whole && std::all_of(brush.away->begin(), brush.away->end(), on_patch);
     for (int a : anchors) whole = whole && near[static_cast<std::size_t>(a)].has_value();
     std::set<CurveId> boundary;
     for (const OrientedSegment& s : patch.boundary) boundary.insert(s.curve);

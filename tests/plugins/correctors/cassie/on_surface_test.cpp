@@ -1,6 +1,8 @@
 // Strokes drawn on a patch (CASSIE app item 20; thesis §3.3.5).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "cassie_corrector.hpp"
 #include "synthetic.hpp"
@@ -80,4 +82,58 @@ TEST_CASE("Items 6 and 20: a brush on a boundary curve does not touch the patch"
   const Correction points = correct_stroke(s, sketch, by_points);
   REQUIRE(points.error.empty());
   CHECK(points.stats.extra.count("on_surface_patch") == 1);
+}
+
+namespace {
+
+bool projected_whole(const Correction& c) {
+  bool whole = false;
+  for (const Constraint& k : c.constraints) whole |= k.kind == ConstraintKind::on_surface && k.enforced;
+  return whole;
+}
+
+// Ends on the patch (z = 0) exactly, and a control point left above it.
+void check_ends_only(const Correction& c) {
+  REQUIRE(c.error.empty());
+  REQUIRE(c.stats.extra.count("on_surface_patch") == 1);
+  CHECK_FALSE(projected_whole(c));
+  const auto& cp = c.edit.curves_added[0].curve.control_points;
+  CHECK(std::abs(cp.front().z()) < 1e-12);
+  CHECK(std::abs(cp.back().z()) < 1e-12);
+  double top = 0.0;
+  for (const Vec3& p : cp) top = std::max(top, p.z());
+  CHECK(top > 0.005);
+}
+
+void check_whole(const Correction& c) {
+  REQUIRE(c.error.empty());
+  REQUIRE(c.stats.extra.count("on_surface_patch") == 1);
+  CHECK(projected_whole(c));
+  for (const Vec3& p : c.edit.curves_added[0].curve.control_points) CHECK(std::abs(p.z()) < 1e-12);
+}
+
+}  // namespace
+
+TEST_CASE("Item 20: the patch spans the stroke (surface_span)", "[cassie][surface]") {
+  const Sketch sketch = square_patch();
+  CassieParams box, ends, brush;  // δ = 2 cm: brush radius 2 cm, surface_snap 5 cm
+  box.surface_span = SurfaceSpan::box;
+  ends.surface_span = SurfaceSpan::stroke_ends;
+  brush.surface_span = SurfaceSpan::brush;
+  SECTION("a stroke starting 3.5 cm above the patch: its first hand position is off it") {
+    const Stroke s = make_stroke(1, 60, [](double u) {
+      return Vec3(-0.1 + 0.2 * u, 0.05 * std::sin(6.0 * u), 0.035 - 0.03 * u);
+    }, 2.0);
+    check_whole(correct_stroke(s, sketch, box));  // every control point in the grown box
+    check_ends_only(correct_stroke(s, sketch, ends));
+    check_ends_only(correct_stroke(s, sketch, brush));
+  }
+  SECTION("a stroke with both ends on the patch lifting 2.7 cm off it in the middle") {
+    const Stroke s = make_stroke(1, 60, [](double u) {
+      return Vec3(-0.1 + 0.2 * u, 0.05 * std::sin(6.0 * u), 0.005 + 0.022 * std::sin(std::numbers::pi * u));
+    }, 2.0);
+    check_whole(correct_stroke(s, sketch, box));
+    check_whole(correct_stroke(s, sketch, ends));
+    check_ends_only(correct_stroke(s, sketch, brush));
+  }
 }

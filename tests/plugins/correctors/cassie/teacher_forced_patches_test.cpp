@@ -162,7 +162,8 @@ TEST_CASE("Teacher-forced fidelity with CASSIE's patches on the Patch and showca
   }
   // Measured (cassie README, "CASSIE's patches"): 2,084 patches, 51 left
   // out; 55 of CASSIE's 67 on-surface strokes projected; Patch 85.5 % /
-  // 84.4 % / 4.71 mm / 5.94 mm, showcase 92.5 % / 89.3 % / 2.93 mm / 4.73 mm.
+  // 84.4 % / 4.71 mm / 5.94 mm, showcase 92.5 % / 89.3 % / 2.93 mm / 4.38 mm
+  // (4.73 mm, p90 20.94 mm, with surface_span=box).
   CHECK(patches == 2084);
   CHECK(left_out < 60);
   CHECK(cassie_on == 67);
@@ -175,5 +176,6 @@ TEST_CASE("Teacher-forced fidelity with CASSIE's patches on the Patch and showca
   CHECK(s.snap_agreement() > 0.920);
   CHECK(s.snap_kind_agreement() > 0.888);
   CHECK(s.endpoint_distance.median < 0.0031);
-  CHECK(s.mean_deviation.median < 0.0049);
+  CHECK(s.mean_deviation.median < 0.0046);
+  CHECK(s.mean_deviation.p90 < 0.0203);
 }
