@@ -44,6 +44,7 @@ const ParamTable<AnalyticParams>& parameters() {
       .real("guideline_angle", &A::guideline_angle, 0.0, 45.0, "deg", "guideline stroke within this angle of a vanishing direction, §2.2 (3°)", degrees)
       .real("guideline_reach", &A::guideline_reach, 0.0, 10.0, "δ", "or its end within this many δ of the vanishing line, §3.1 eq. 3 (choice, 2)")
       .boolean("guideline_fitness", &A::guideline_fitness, "choose a guideline's direction by eq. 3 × eq. 4 of the segment {known point, direction, free end}, §3.1 (choice, on); off = the smallest angle")
+      .boolean("first_stroke_ground", &A::first_stroke_ground, "the first scaffold stroke lies in the ground plane (§2, Fig. 3a) even when not straight; off = only a straight one")
       .real("vanishing_merge", &A::vanishing_merge, 0.0, 45.0, "deg", "a segment within this angle of a vanishing direction adds no new one, §4.1–4.2 / Fig. 11d (0.26°)", degrees)
       .real("tick_length", &A::tick_length, 0.0, 10.0, "in", "dimension ticks are shorter than this, §2.3 (0.4 in)")
       .real("tick_reach", &A::tick_reach, 0.0, 10.0, "δ", "a tick crosses a guideline passing within this many δ beyond its ends, §3.1 eq. 3 (1)")

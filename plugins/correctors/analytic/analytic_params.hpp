@@ -77,6 +77,11 @@ struct AnalyticParams {
   // best §3.1 fitness of the segment {known point, direction, free end}
   // (eq. 3 × eq. 4) instead of the smallest angle (eighth round).
   bool guideline_fitness = true;
+  // §2: "the first stroke is assumed to lie in the ground plane" (Fig. 3a):
+  // the first scaffold stroke becomes the ground-plane segment between its
+  // ends even when it fails the straightness test; false = only a straight
+  // one, a curved first stroke left free (ninth round of the tablet sessions).
+  bool first_stroke_ground = false;
   // A segment within this angle of an existing vanishing direction adds no
   // vanishing direction of its own (§4.2: nearly-parallel vanishing directions,
   // Fig. 11d; the paper suggests "automatic filtering").

@@ -124,7 +124,10 @@ StrokeOutcome analyse_stroke(const Stroke& stroke, const Scaffold& s, const Sket
   const double chord = (s2.points.back() - s2.points.front()).norm();
   const double dev = chord_deviation(s2.points);
   const bool straight = chord > 0 && dev <= p.straightness * chord && dev <= p.delta_max * cam.dpi();
-  if (straight) {
+  // §2: the first stroke is assumed to lie in the ground plane, whatever its
+  // wobble; leaving it free makes a later stroke (e.g. a diagonal) the first.
+  const bool first_ground = p.first_stroke_ground && chord > 0 && s.segment_count() == 0;
+  if (straight || first_ground) {
     StrokeEnd ends[2];
     stroke_ends(cam, s2, ends);
     if (s.segment_count() == 0) {
