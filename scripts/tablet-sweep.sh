@@ -8,7 +8,9 @@
 # written for one-view sessions, raw: gt_distance_mean_m, and the shape
 # pair gt_shape_distance_mean_m / gt_shape_coverage_mean_m, eye-scaled like
 # aligned where the session is one view, in mm;
-# parallel/perpendicular/coincident recalls; dangling endpoint ratio).
+# parallel/perpendicular/coincident recalls; dangling endpoint ratio; curves
+# made: a distance is over the curves made only, so a session that infers
+# few curves scores a small distance and a large coverage).
 #
 #   scripts/tablet-sweep.sh OUT
 #   MODELS="cube lamp" SEEDS="1 2" NOISES="0 1" STYLES=analytic scripts/tablet-sweep.sh OUT
@@ -48,7 +50,7 @@ EOF
 rm -rf "$out/runs/tablet-sweep"
 "$bin" run "$out/sweep.yaml" --no-timings >/dev/null 2>&1
 # metrics.csv: recording,stack,<sweep values>,ok,error,wall_ms,<metrics...>
-awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_shape_distance_mean_m gt_shape_coverage_mean_m gt_parallel_recall gt_perpendicular_recall gt_coincident_point_recall dangling_endpoint_ratio" '
+awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_shape_distance_mean_m gt_shape_coverage_mean_m gt_parallel_recall gt_perpendicular_recall gt_coincident_point_recall dangling_endpoint_ratio curves" '
   function median(list,   n, a, i, j, t) {
     n = split(list, a, " ")
     for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (a[j] + 0 < a[i] + 0) { t = a[i]; a[i] = a[j]; a[j] = t }
@@ -73,9 +75,10 @@ awk -F, -v keys="gt_distance_mean_aligned_eye_scale_m gt_distance_mean_m gt_shap
         x = median(v[order[g], i])
         if (x == "-") printf " -"
         else if (i <= 4) printf " %.1f", 1000 * x
+        else if (k[i] == "curves") printf " %g", x
         else printf " %.2f", x
       }
       printf "\n"
     }
   }' "$out/runs/tablet-sweep/metrics.csv" | sort -k1,1 -k2,2 -k4,4 -k3,3n |
-  { echo "model style noise stack aligned_mm raw_mm shape_mm coverage_mm parallel perpendicular coincident dangling"; cat; } | column -t
+  { echo "model style noise stack aligned_mm raw_mm shape_mm coverage_mm parallel perpendicular coincident dangling curves"; cat; } | column -t
