@@ -166,6 +166,14 @@ CassieSession load_cassie_session(const std::filesystem::path& dir, const std::s
   } catch (const std::exception& e) {
     throw CassieFormatError(raw_path.string() + ": " + e.what());
   }
+  try {
+    // The lab's messages name the file, element and field already.
+    out.logs = read_cassie_constraint_logs(raw_path);
+    std::vector<std::string> import_warnings;  // the quirks above, found again
+    if (!out.logs.empty()) add_mirrored_twin_logs(import_cassie(history_path, raw_path, name, &import_warnings), out.logs);
+  } catch (const std::exception& e) {
+    throw CassieFormatError(e.what());
+  }
   return out;
 }
 
