@@ -55,7 +55,7 @@ struct CassieGraphParams {
   // m: a logged applied position lies on a curve passing this close (its
   // target; an older export's bare position, with no isIntersection flag,
   // counts as an intersection with such a curve).
-  double logged_on_curve = 1e-3;
+  double logged_on_curve = 1e-4;
   // With logged_meets: a logged stroke's joint (a line's end or closest
   // point) near no logged applied intersection meets nothing, instead of
   // the on_curve (line_meets) test.

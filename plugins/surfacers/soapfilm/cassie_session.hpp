@@ -54,7 +54,8 @@ struct CassieSession {
 
 // Loads <dir>/sketch_history/<name>.json and <dir>/raw_data/<name>.json
 // (the logs with the lab's CASSIE importer: read_cassie_constraint_logs, and
-// import_cassie for the mirror plane and twins).
+// import_cassie for the mirror plane and twins; a history it refuses, e.g.
+// without input samples, is a warning and leaves the twins without logs).
 // Quirks of real data are warnings: a stroke deleted before it was created
 // (flower: its id was deleted, then re-created) takes the first delete-stroke
 // entry of raw_data after its creation, or stays alive if there is none.
