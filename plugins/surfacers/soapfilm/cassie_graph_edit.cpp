@@ -113,9 +113,7 @@ class JointTest {
   // The alive curves the point p meets, base being the test without a log.
   std::vector<CurveHit> hits(const Vec3& p, double base) const {
     if (!logged_) return alive_->curves_near(p, base);
-    std::vector<const Vec3*> near;
-    for (const Vec3& q : targets_)
-      if ((q - p).norm() <= reach_) near.push_back(&q);
+    const std::vector<const Vec3*> near = targets_near(p);
     if (near.empty()) return params_->logged_only ? std::vector<CurveHit>{} : alive_->curves_near(p, base);
     std::vector<CurveHit> out = alive_->curves_near(p, std::max(base, reach_));
     std::erase_if(out, [&](const CurveHit& h) {
@@ -125,12 +123,17 @@ class JointTest {
   }
   // Whether a point of a line's interior may meet (logged_only).
   bool may_meet(const Vec3& p) const {
-    return !logged_ || !params_->logged_only ||
-           std::any_of(targets_.begin(), targets_.end(), [&](const Vec3& q) { return (q - p).norm() <= reach_; });
+    return !logged_ || !params_->logged_only || !targets_near(p).empty();
   }
   const Overlay& alive() const { return *alive_; }
 
  private:
+  std::vector<const Vec3*> targets_near(const Vec3& p) const {
+    std::vector<const Vec3*> out;
+    for (const Vec3& q : targets_)
+      if ((q - p).norm() <= reach_) out.push_back(&q);
+    return out;
+  }
   bool passes(CurveId c, const Vec3& q) const {
     const std::vector<CurveHit> at = alive_->curves_near(q, params_->logged_on_curve);
     return std::any_of(at.begin(), at.end(), [&](const CurveHit& h) { return h.curve == c; });
