@@ -39,32 +39,6 @@ std::string mismatch_cause(const TeacherForcedStroke& r, int k, const CassieCons
   return "we snapped, CASSIE free: CASSIE logged none there";
 }
 
-void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, CassieConstraintLog>& logs) {
-  const Workspace& ws = recording.header.workspace;
-  if (!(ws.mirror_normal.norm() > 0)) return;
-  const Vec3 n = ws.mirror_normal.normalized();
-  const double offset = ws.mirror_offset / ws.mirror_normal.norm();
-  const auto reflect = [&](std::vector<Vec3> points) {
-    for (Vec3& p : points) p -= 2.0 * (n.dot(p) - offset) * n;
-    return points;
-  };
-  std::map<double, std::vector<StrokeId>> by_time;
-  for (const Event& e : recording.events)
-    if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) by_time[e.time].push_back(s->stroke.id);
-  for (const auto& [t, ids] : by_time) {
-    if (ids.size() != 2) continue;
-    for (int i = 0; i < 2; ++i) {
-      const auto drawn = logs.find(ids[i]);
-      if (drawn == logs.end() || logs.count(ids[1 - i])) continue;
-      CassieConstraintLog twin = drawn->second;  // planarity and closure are the same in a reflection
-      twin.applied = reflect(twin.applied);
-      twin.rejected = reflect(twin.rejected);
-      twin.mirrored_twin = true;
-      logs[ids[1 - i]] = std::move(twin);
-    }
-  }
-}
-
 void count_causes(const std::vector<TeacherForcedStroke>& strokes,
                   const std::map<StrokeId, CassieConstraintLog>* logs, double near,
                   std::map<std::string, CauseCount>& counts) {

@@ -27,11 +27,6 @@ namespace sketchlab::cli {
 // cassie corrector reports).
 std::string mismatch_cause(const TeacherForcedStroke& r, int k, const CassieConstraintLog* log, double near);
 
-// CASSIE logs only the stroke drawn, not its mirrored twin (a stroke of the
-// same creation time): gives each unlogged twin its twin's log reflected in
-// the recording's mirror plane (header workspace).
-void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, CassieConstraintLog>& logs);
-
 struct CauseCount {
   std::size_t ends = 0;             // ends with that cause
   std::size_t snap_disagreements = 0;  // of which snapped in one curve only

@@ -14,6 +14,7 @@
 #include "sketchlab/event.hpp"
 #include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/stroke.hpp"
+#include "sketchlab/workspace.hpp"
 
 namespace sketchlab {
 
@@ -372,6 +373,12 @@ std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::f
         const json& q = wrapped ? a[j]["position"] : a[j];
         list->push_back({src.number(src.need(q, "x", at), at, "x"), src.number(src.need(q, "y", at), at, "y"),
                          src.number(src.need(q, "z", at), at, "z")});
+        if (list != &log.applied) continue;
+        std::optional<bool>& intersection = log.applied_intersection.emplace_back();
+        if (!wrapped || !a[j].contains("isIntersection")) continue;
+        if (!a[j]["isIntersection"].is_boolean())
+          src.fail(where + "." + key + "[" + std::to_string(j) + "]", "field 'isIntersection' must be true or false");
+        intersection = a[j]["isIntersection"].get<bool>();
       }
     }
     for (const auto& [key, flag] : {std::pair{"planar", &log.planar}, std::pair{"closedLoop", &log.closed_loop},
@@ -382,6 +389,30 @@ std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::f
     }
   }
   return out;
+}
+
+void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, CassieConstraintLog>& logs) {
+  const Workspace& ws = recording.header.workspace;
+  if (!(ws.mirror_normal.norm() > 0)) return;
+  const auto reflect = [&](std::vector<Vec3> points) {
+    for (Vec3& p : points) p = mirror_point(ws, p);
+    return points;
+  };
+  std::map<double, std::vector<StrokeId>> by_time;
+  for (const Event& e : recording.events)
+    if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) by_time[e.time].push_back(s->stroke.id);
+  for (const auto& [t, ids] : by_time) {
+    if (ids.size() != 2) continue;
+    for (int i = 0; i < 2; ++i) {
+      const auto drawn = logs.find(ids[i]);
+      if (drawn == logs.end() || logs.count(ids[1 - i])) continue;
+      CassieConstraintLog twin = drawn->second;  // planarity, closure and the flags are the same in a reflection
+      twin.applied = reflect(twin.applied);
+      twin.rejected = reflect(twin.rejected);
+      twin.mirrored_twin = true;
+      logs[ids[1 - i]] = std::move(twin);
+    }
+  }
 }
 
 std::vector<CassiePatchLog> read_cassie_patches(const std::filesystem::path& raw_data_json) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
+#include "sketchlab/workspace.hpp"
 #include "test_paths.hpp"
 
 using namespace sketchlab;
@@ -346,10 +348,22 @@ TEST_CASE("CASSIE's constraint logs are read per stroke from raw_data", "[record
   }
   CHECK(flagged == 174);
   CHECK(planar == 165);
+  // chair's older export logs bare points: no isIntersection flag.
+  for (const auto& [id, log] : logs) {
+    REQUIRE(log.applied_intersection.size() == log.applied.size());
+    for (const std::optional<bool>& f : log.applied_intersection) CHECK_FALSE(f.has_value());
+  }
   const auto car = read_cassie_constraint_logs(cassie_dir() / "raw_data" / "vintage_car.json");
-  std::size_t closed = 0;
-  for (const auto& [id, log] : car) closed += log.closed_loop.value_or(false);
+  std::size_t closed = 0, car_applied = 0, intersections = 0;
+  for (const auto& [id, log] : car) {
+    closed += log.closed_loop.value_or(false);
+    car_applied += log.applied.size();
+    REQUIRE(log.applied_intersection.size() == log.applied.size());
+    for (const std::optional<bool>& f : log.applied_intersection) intersections += f.value();
+  }
   CHECK(closed == 6);
+  CHECK(car_applied == 766);
+  CHECK(intersections == 666);
 
   const std::filesystem::path dir = test::binary_path("tests/scratch/cassie_logs");
   std::filesystem::create_directories(dir);
@@ -362,6 +376,40 @@ TEST_CASE("CASSIE's constraint logs are read per stroke from raw_data", "[record
   CHECK_THROWS_WITH(read_cassie_constraint_logs(dir / "flag.json"),
                     Catch::Contains("flag.json") && Catch::Contains("allSketchedStrokes[0]") &&
                         Catch::Contains("'planar' must be true or false"));
+  std::ofstream(dir / "cross.json", std::ios::trunc)
+      << R"({"allSketchedStrokes":[{"id":3,"appliedPositionConstraints":[{"position":{"x":1,"y":0,"z":0},"isIntersection":1}]}]})";
+  CHECK_THROWS_WITH(read_cassie_constraint_logs(dir / "cross.json"),
+                    Catch::Contains("cross.json") && Catch::Contains("appliedPositionConstraints[0]") &&
+                        Catch::Contains("'isIntersection' must be true or false"));
+}
+
+TEST_CASE("a mirrored twin gets its drawn twin's log reflected in the mirror plane", "[recording][cassie]") {
+  const Recording rec = import_cassie_session(cassie_dir(), "vintage_car");
+  REQUIRE(rec.header.workspace.mirror_normal.norm() > 0);
+  const auto drawn = read_cassie_constraint_logs(cassie_dir() / "raw_data" / "vintage_car.json");
+  auto logs = drawn;
+  add_mirrored_twin_logs(rec, logs);
+  std::size_t twins = 0;
+  for (const auto& [id, log] : logs) {
+    if (!log.mirrored_twin) {
+      CHECK(drawn.count(id) == 1);
+      continue;
+    }
+    ++twins;
+    CHECK(drawn.count(id) == 0);
+    // Its drawn twin: the logged stroke whose reflected positions these are.
+    const auto twin = std::find_if(drawn.begin(), drawn.end(), [&](const auto& d) {
+      if (d.second.applied.size() != log.applied.size() || d.second.applied.empty()) return false;
+      for (std::size_t i = 0; i < log.applied.size(); ++i)
+        if ((mirror_point(rec.header.workspace, d.second.applied[i]) - log.applied[i]).norm() > 1e-12) return false;
+      return true;
+    });
+    if (!log.applied.empty()) {
+      REQUIRE(twin != drawn.end());
+      CHECK(twin->second.applied_intersection == log.applied_intersection);
+    }
+  }
+  CHECK(twins > 100);
 }
 
 TEST_CASE("CASSIE's patch log is read from raw_data", "[recording][cassie]") {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "curve_graph.hpp"
@@ -91,28 +92,81 @@ class Overlay {
   bool closed_seam_nodes_;
 };
 
-// Where the new curve meets alive curves within `distance` (see the
-// header), by t_new.
-std::vector<Meeting> meetings(const Overlay& alive, const Curve& curve, double distance) {
+// Which alive curves a point of the new curve meets: those within `base`
+// (on_curve for a Bézier joint, line_meets·δ for a line), or, on a logged
+// stroke, as its log says (CassieGraphParams::logged_meets).
+class JointTest {
+ public:
+  JointTest(const Overlay& alive, const CassieCurve& in, const CassieGraphParams& params, double delta)
+      : alive_(&alive), params_(&params), reach_(params.logged_meets * delta) {
+    if (!in.log || !(reach_ > 0.0)) return;
+    logged_ = true;
+    // CASSIE app, item 21: "applied" = bound in the best subset; item 22:
+    // those onto a curve or a node are the graph's intersections.
+    const CassieConstraintLog& log = *in.log;
+    for (std::size_t i = 0; i < log.applied.size(); ++i) {
+      const std::optional<bool> flag = i < log.applied_intersection.size() ? log.applied_intersection[i] : std::nullopt;
+      if (flag.value_or(true)) targets_.push_back(log.applied[i]);
+    }
+  }
+
+  // The alive curves the point p meets, base being the test without a log.
+  std::vector<CurveHit> hits(const Vec3& p, double base) const {
+    if (!logged_) return alive_->curves_near(p, base);
+    const std::vector<const Vec3*> near = targets_near(p);
+    if (near.empty()) return params_->logged_only ? std::vector<CurveHit>{} : alive_->curves_near(p, base);
+    std::vector<CurveHit> out = alive_->curves_near(p, std::max(base, reach_));
+    std::erase_if(out, [&](const CurveHit& h) {
+      return h.distance > base && std::none_of(near.begin(), near.end(), [&](const Vec3* q) { return passes(h.curve, *q); });
+    });
+    return out;
+  }
+  // Whether a point of a line's interior may meet (logged_only).
+  bool may_meet(const Vec3& p) const {
+    return !logged_ || !params_->logged_only || !targets_near(p).empty();
+  }
+  const Overlay& alive() const { return *alive_; }
+
+ private:
+  std::vector<const Vec3*> targets_near(const Vec3& p) const {
+    std::vector<const Vec3*> out;
+    for (const Vec3& q : targets_)
+      if ((q - p).norm() <= reach_) out.push_back(&q);
+    return out;
+  }
+  bool passes(CurveId c, const Vec3& q) const {
+    const std::vector<CurveHit> at = alive_->curves_near(q, params_->logged_on_curve);
+    return std::any_of(at.begin(), at.end(), [&](const CurveHit& h) { return h.curve == c; });
+  }
+  const Overlay* alive_;
+  const CassieGraphParams* params_;
+  double reach_;
+  bool logged_ = false;
+  std::vector<Vec3> targets_;  // logged applied intersections (or unflagged positions)
+};
+
+// Where the new curve meets alive curves with `base` as the test distance
+// (see the header), by t_new.
+std::vector<Meeting> meetings(const JointTest& test, const Curve& curve, double base) {
   std::vector<Meeting> out;
   if (curve.kind == CurveKind::line) {
     // Its ends, then where it passes closest to each curve (a line may meet
     // one curve at both ends, or at an end and inside).
     const Vec3 a = curve.control_points.front(), b = curve.control_points.back();
     for (const double t : {0.0, curve.t_max()})
-      for (const CurveHit& h : alive.curves_near(t == 0.0 ? a : b, distance)) out.push_back({t, h.curve, h.t, h.point});
+      for (const CurveHit& h : test.hits(t == 0.0 ? a : b, base)) out.push_back({t, h.curve, h.t, h.point});
     const double length = (b - a).norm();
-    for (const CurveHit& h : alive.curves_near_segment(a, b, distance)) {
+    for (const CurveHit& h : test.alive().curves_near_segment(a, b, base)) {
       const ClosestPoint on_line = closest_point(curve, h.point);
       const bool at_end = std::any_of(out.begin(), out.end(), [&](const Meeting& m) {
-        return m.old == h.curve && std::abs(m.t_new - on_line.t) * length <= 2.0 * distance;
+        return m.old == h.curve && std::abs(m.t_new - on_line.t) * length <= 2.0 * base;
       });
-      if (!at_end) out.push_back({on_line.t, h.curve, h.t, h.point});
+      if (!at_end && test.may_meet(on_line.point)) out.push_back({on_line.t, h.curve, h.t, h.point});
     }
   } else {
     const int K = curve.segment_count();
     for (int k = 0; k <= (curve.closed ? K - 1 : K); ++k)
-      for (const CurveHit& h : alive.curves_near(curve.control_points[static_cast<std::size_t>(3 * k)], distance))
+      for (const CurveHit& h : test.hits(curve.control_points[static_cast<std::size_t>(3 * k)], base))
         out.push_back({static_cast<double>(k), h.curve, h.t, h.point});
   }
   std::stable_sort(out.begin(), out.end(), [](const Meeting& a, const Meeting& b) { return a.t_new < b.t_new; });
@@ -145,7 +199,7 @@ void add_curve(Overlay& overlay, const CassieCurve& in, const CassieGraphParams&
       if (has_incidence(overlay.node(id), c, t)) return id;
     return 0;
   };
-  for (const Meeting& m : meetings(overlay, curve, meet)) {
+  for (const Meeting& m : meetings(JointTest(overlay, in, params, delta), curve, meet)) {
     const double t = own_t(m.t_new);
     // 0. The new curve's node at this parameter (a joint meeting two curves).
     if (const NodeId here = node_at(t)) {

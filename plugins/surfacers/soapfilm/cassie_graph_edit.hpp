@@ -8,10 +8,12 @@
 // joints lying on an alive curve; a line is not split (item 17) and meets a
 // curve at an end lying on it, or where it passes within 0.2δ of it (item
 // 17: a node is made only when the constraint ends that close to the final
-// line).
+// line). Where CASSIE logged the stroke, its applied intersection
+// constraints may decide the joints instead (logged_meets below).
 #include <vector>
 
 #include "sketchlab/edit.hpp"
+#include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/network.hpp"
 
 namespace sketchlab::soapfilm {
@@ -42,6 +44,22 @@ struct CassieGraphParams {
   // CASSIE did not have, creates as many (1,412) and keeps more to the end
   // (408 against 402 of 480).
   bool reuse_left_over = false;
+  // ×δ, 0 = off. CASSIE's graph intersections are the intersection
+  // constraints its solve applied (CASSIE app, items 21–22), but the solve
+  // may leave the new end up to ~1 mm off the old curve (vintage_car,
+  // README.md "Fidelity"). On a logged stroke (CassieCurve::log), a joint
+  // (a line: an end) within this of a logged applied intersection meets the
+  // alive curves that pass within logged_on_curve of its position and within
+  // this of the joint, at their closest point to the joint.
+  double logged_meets = 0.0;
+  // m: a logged applied position lies on a curve passing this close (its
+  // target; an older export's bare position, with no isIntersection flag,
+  // counts as an intersection with such a curve).
+  double logged_on_curve = 1e-4;
+  // With logged_meets: a logged stroke's joint (a line's end or closest
+  // point) near no logged applied intersection meets nothing, instead of
+  // the on_curve (line_meets) test.
+  bool logged_only = false;
 };
 
 // One curve of a replayed stroke.
@@ -49,6 +67,9 @@ struct CassieCurve {
   StrokeId stroke = 0;   // source_stroke of the network curve
   Curve curve;
   double scale = 1.0;    // zoom s > 0 when it was drawn
+  // CASSIE's log of the stroke (a mirrored twin's: its twin's, reflected),
+  // or null; not owned, read during cassie_graph_edit only.
+  const CassieConstraintLog* log = nullptr;
 };
 
 // The edit adding `curves` to `network` in order (a stroke and its mirrored

@@ -32,7 +32,8 @@ class CassieCurves : public Corrector {
     std::vector<CassieCurve> in;
     for (std::size_t i : next_) {
       const CassieStroke& s = session_->strokes[i];
-      in.push_back({stroke.id, s.curve, s.canvas_scale});
+      const auto log = session_->logs.find(static_cast<StrokeId>(s.id));
+      in.push_back({stroke.id, s.curve, s.canvas_scale, log == session_->logs.end() ? nullptr : &log->second});
     }
     try {
       c.edit = cassie_graph_edit(sketch.network, in, params_);

@@ -166,6 +166,20 @@ CassieSession load_cassie_session(const std::filesystem::path& dir, const std::s
   } catch (const std::exception& e) {
     throw CassieFormatError(raw_path.string() + ": " + e.what());
   }
+  try {
+    out.logs = read_cassie_constraint_logs(raw_path);  // its messages name the file, element and field
+  } catch (const std::exception& e) {
+    throw CassieFormatError(e.what());
+  }
+  if (out.logs.empty()) return out;
+  try {
+    // The mirror plane and the twins come from the lab's importer, which
+    // also needs each stroke's input samples (the curves above do not).
+    std::vector<std::string> import_warnings;  // the quirks above, found again
+    add_mirrored_twin_logs(import_cassie(history_path, raw_path, name, &import_warnings), out.logs);
+  } catch (const std::exception& e) {
+    out.warnings.push_back(std::string(e.what()) + "; the mirrored twins get no constraint log");
+  }
   return out;
 }
 

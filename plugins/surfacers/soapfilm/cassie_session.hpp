@@ -7,12 +7,14 @@
 // position).
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "sketchlab/curve.hpp"
+#include "sketchlab/lab/cassie_import.hpp"
 
 namespace sketchlab::soapfilm {
 
@@ -42,10 +44,18 @@ struct CassieSession {
   int system = 0;  // sketchSystem: 0 freehand, 1 armature, 2 patch
   std::vector<CassieStroke> strokes;  // sketch_history order
   std::vector<CassiePatch> patches;   // allCreatedPatches order
+  // CASSIE's constraint log per stroke id (raw_data allSketchedStrokes:
+  // the position constraints it applied, CASSIE app, item 21), each mirrored
+  // twin given its drawn twin's reflected (lab's add_mirrored_twin_logs);
+  // empty for sessions that log none.
+  std::map<StrokeId, CassieConstraintLog> logs;
   std::vector<std::string> warnings;  // data quirks handled (file, element, what was done)
 };
 
-// Loads <dir>/sketch_history/<name>.json and <dir>/raw_data/<name>.json.
+// Loads <dir>/sketch_history/<name>.json and <dir>/raw_data/<name>.json
+// (the logs with the lab's CASSIE importer: read_cassie_constraint_logs, and
+// import_cassie for the mirror plane and twins; a history it refuses, e.g.
+// without input samples, is a warning and leaves the twins without logs).
 // Quirks of real data are warnings: a stroke deleted before it was created
 // (flower: its id was deleted, then re-created) takes the first delete-stroke
 // entry of raw_data after its creation, or stays alive if there is none.

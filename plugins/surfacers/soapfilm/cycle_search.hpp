@@ -27,6 +27,14 @@ enum class CloseRule { into_start, into_start_segment, at_start_node };
 // segment leaves.
 enum class BrokenSeeds { one, all, at_break };
 
+// A cycle whose patch the user deleted by hand (a DeletePatchEvent), found
+// again while its curves stand (README.md, fourteenth round): made again
+// (forget, the default); not made, read as the cycle item 25 says keeps its
+// patch, so no new cycle for item 26 (not_remade); or not made and still one
+// of the two cycles its segments may bound (item 24; counts). Both others
+// measured worse; CASSIE's log re-makes 5 of the 65 its users deleted.
+enum class HandDeleted { forget, not_remade, counts };
+
 struct CycleSearchParams {
   NodeFrameParams frame;
   CloseRule close_rule = CloseRule::into_start;
@@ -36,6 +44,7 @@ struct CycleSearchParams {
   // by the flip test (transported · node normal < 0 reverses it).
   bool sharp_node_order = false;
   BrokenSeeds broken_seeds = BrokenSeeds::one;
+  HandDeleted hand_deleted = HandDeleted::forget;
   // Item 25's "two walks per new segment, from one end": the walk leaves the
   // start node along the segment (the default), or, set, begins by turning
   // at the start node with its own normal (the segment as the arrival) and

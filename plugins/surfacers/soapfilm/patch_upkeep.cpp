@@ -70,6 +70,22 @@ std::set<PatchId> patches_on_any(const Network& net, const std::set<CurveId>& cu
   return out;
 }
 
+// The boundaries of the patches the user deleted by hand (the history's
+// delete_patch entries; their inverse steps hold the patches) whose curves
+// all still stand. Read only when a walk closed, since it scans the history.
+std::vector<std::vector<OrientedSegment>> deleted_by_hand(const Sketch& sketch) {
+  std::vector<std::vector<OrientedSegment>> out;
+  for (const HistoryEntry& entry : sketch.history.done) {
+    if (entry.action != "delete_patch") continue;
+    for (const HistoryStep& step : entry.steps)
+      for (const Patch& p : step.inverse.patches_added)
+        if (std::all_of(p.boundary.begin(), p.boundary.end(),
+                        [&](const OrientedSegment& piece) { return sketch.network.find_curve(piece.curve); }))
+          out.push_back(p.boundary);
+  }
+  return out;
+}
+
 // Seeds in (curve, t0) order.
 std::vector<int> ordered(const CurveGraph& graph, const std::set<int>& seeds) {
   std::vector<int> out(seeds.begin(), seeds.end());
@@ -241,6 +257,13 @@ UpkeepResult patch_upkeep(const Sketch& sketch, const Edit& last, const CycleSea
     const Patch& patch = net.patches().at(id);
     filter.add(boundary_key(graph, patch.boundary), patch.automatic || params.manual_patches_count);
   }
+  // A cycle the user deleted the patch of is no new cycle (item 26), and
+  // with `counts` still one its segments bound (item 24).
+  const bool any_found = std::any_of(walked.begin(), walked.end(), [](const auto& f) { return !f.empty(); });
+  if (params.hand_deleted != HandDeleted::forget && any_found)
+    for (const std::vector<OrientedSegment>& boundary : deleted_by_hand(sketch))
+      if (std::vector<int> key = boundary_key(graph, boundary); !key.empty() && !filter.duplicate(key))
+        filter.add(std::move(key), params.hand_deleted == HandDeleted::counts);
   std::map<std::vector<int>, PatchId> kept_if_found;
   for (const auto& [id, key] : broken)
     if (!key.empty()) kept_if_found[key] = id;

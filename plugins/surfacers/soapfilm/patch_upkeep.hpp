@@ -22,7 +22,8 @@
 // seeds and walks reach, and the patches on a curve come from the kernel's
 // Network::patches_on, so neither the curve list nor the patch list is
 // scanned (only a deletion reads the history, back to the deleted curves'
-// creation).
+// creation; with CycleSearchParams::hand_deleted set, an edit whose walks
+// closed reads the history's patch deletions by hand).
 #include <map>
 #include <string>
 #include <vector>

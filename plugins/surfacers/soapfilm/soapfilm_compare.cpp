@@ -1,5 +1,5 @@
-// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M] [--old-nodes-first]
-//                  [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]
+// soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] [--meets M]
+//                  [--logged-meets K] [--logged-on-curve M] [--logged-only] [--old-nodes-first] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]
 //
 // Compares this plugin with CASSIE on the bundled sessions (default: every
 // session in DATA_DIR/sketch_history, DATA_DIR = data/cassie), two ways:
@@ -15,6 +15,9 @@
 // --no-user-edits replays CASSIE's curves only (not its users' manual patch
 // additions and deletions); --meets sets the distance at which a replayed
 // Bézier joint meets an alive curve (CassieGraphParams::on_curve);
+// --logged-meets, --logged-on-curve and --logged-only let CASSIE's log of
+// applied intersections decide a logged stroke's joints (CassieGraphParams::
+// logged_meets ×δ, logged_on_curve m, logged_only);
 // --old-nodes-first reuses an old curve's node within δ before one of the
 // new curve within 0.5δ (CassieGraphParams::reuse_new_first unset);
 // --left-over-nodes also reuses the nodes deleted curves left inside others
@@ -120,6 +123,15 @@ int main(int argc, char** argv) {
         // Replay: a joint this close (m) to an alive curve meets it.
         options.graph.on_curve = std::stod(argv[++i]);
         if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
+      } else if (a == "--logged-meets" && i + 1 < argc) {
+        // Replay: joints near a logged applied intersection meet curves this far (×δ).
+        options.graph.logged_meets = std::stod(argv[++i]);
+        if (!(options.graph.logged_meets >= 0.0)) throw std::invalid_argument("--logged-meets: expected a multiple of δ >= 0");
+      } else if (a == "--logged-on-curve" && i + 1 < argc) {
+        options.graph.logged_on_curve = std::stod(argv[++i]);
+        if (!(options.graph.logged_on_curve >= 0.0)) throw std::invalid_argument("--logged-on-curve: expected a distance >= 0 (m)");
+      } else if (a == "--logged-only") {
+        options.graph.logged_only = true;
       } else if (a == "--old-nodes-first") {
         options.graph.reuse_new_first = false;
       } else if (a == "--left-over-nodes") {
@@ -138,7 +150,7 @@ int main(int argc, char** argv) {
         list_breaks = true;
       } else if (a.rfind("--", 0) == 0) {
         std::cerr << "usage: soapfilm_compare [DATA_DIR] [SESSION...] [--param NAME=VALUE]... [--no-user-edits] "
-                     "[--meets M] [--old-nodes-first] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]\n";
+                     "[--meets M] [--logged-meets K] [--logged-on-curve M] [--logged-only] [--old-nodes-first] [--left-over-nodes] [--events CSV] [--astray] [--extras] [--timing] [--breaks]\n";
         return 2;
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;

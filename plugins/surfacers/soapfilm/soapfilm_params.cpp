@@ -58,6 +58,13 @@ const ParamTable<SoapfilmParams>& parameters() {
                   {{"one", BrokenSeeds::one}, {"all", BrokenSeeds::all}, {"at_break", BrokenSeeds::at_break}},
                   "segments of a broken patch searched first: one, all, or those at the node the breaking segment "
                   "leaves (CASSIE app, item 25)")
+          .choice("hand_deleted", nested_field(&P::search, &CycleSearchParams::hand_deleted),
+                  {{"forget", HandDeleted::forget},
+                   {"not_remade", HandDeleted::not_remade},
+                   {"counts", HandDeleted::counts}},
+                  "a cycle whose patch the user deleted by hand, found again: made again (forget), not made "
+                  "(not_remade), or not made and counted towards the two patches a segment may bound (counts; "
+                  "CASSIE app, items 24-26)")
           .boolean("start_turn", nested_field(&P::search, &CycleSearchParams::start_turn),
                    "a segment's walks begin by turning at its start node with that node's normal instead of leaving "
                    "it along the segment (CASSIE app, item 25, read the other way)")

@@ -77,15 +77,27 @@ Recording import_cassie_session(const std::filesystem::path& dataset_dir,
 // newer exports only) and `onSurface` (item 20).
 struct CassieConstraintLog {
   std::vector<Vec3> applied, rejected;
+  // Per applied constraint, in the order of `applied`: its isIntersection
+  // flag (a constraint onto a curve or a node, not a plane or grid point)
+  // where the export has it; unset where it logs a bare point (older
+  // exports).
+  std::vector<std::optional<bool>> applied_intersection;
   std::optional<bool> planar, closed_loop, on_surface;
   bool mirrored_twin = false;  // copied from the drawn twin (CASSIE logs only that one)
 };
 
 // Reads every stroke's log from a raw_data/<session>.json, by CASSIE id.
 // Throws std::runtime_error naming the file, the element and the field for
-// malformed JSON or a missing/mistyped field (a flag must be true or false);
-// sessions without allSketchedStrokes give an empty map.
+// malformed JSON or a missing/mistyped field (a flag, isIntersection
+// included, must be true or false); sessions without allSketchedStrokes give
+// an empty map.
 std::map<StrokeId, CassieConstraintLog> read_cassie_constraint_logs(const std::filesystem::path& raw_data_json);
+
+// CASSIE logs only the stroke drawn, not its mirrored twin (a stroke of the
+// same creation time): gives each unlogged twin of `recording` (an imported
+// session) its twin's log with the positions reflected in the recording's
+// mirror plane (header workspace; nothing without one) and mirrored_twin set.
+void add_mirrored_twin_logs(const Recording& recording, std::map<StrokeId, CassieConstraintLog>& logs);
 
 // A patch of CASSIE's log (raw_data allCreatedPatches, with the times of its
 // add-surface and delete-surface entries in systemStates, interactionType 3

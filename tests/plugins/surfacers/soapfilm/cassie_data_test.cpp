@@ -130,6 +130,12 @@ TEST_CASE("CASSIE sessions: curves, times, patch log, the flower quirk is a warn
   }
   CHECK(automatic == 74);
   CHECK(with_hand == 19);
+  // CASSIE's constraint logs (items 21–22): the drawn strokes' and, reflected,
+  // their mirrored twins'.
+  std::size_t twins = 0;
+  for (const auto& [id, log] : flower.logs) twins += log.mirrored_twin;
+  CHECK(flower.logs.size() > 124);
+  CHECK(twins == flower.logs.size() - 124);
 
   Scratch s("session");
   s.write("raw_data/x.json", R"({"sketchSystem": 2, "systemStates": [], "allCreatedPatches": []})");
@@ -148,4 +154,19 @@ TEST_CASE("CASSIE sessions: curves, times, patch log, the flower quirk is a warn
   const auto x = soapfilm::load_cassie_session(s.dir, "x");
   REQUIRE(x.warnings.size() == 1);
   CHECK_THAT(x.warnings[0], Catch::Contains("systemStates[0] names patch 5"));
+  // A malformed constraint log is an error naming the file and the field; a
+  // history without input samples (which the twins' reflection needs) only
+  // leaves the twins without logs.
+  s.write("raw_data/x.json", R"({"sketchSystem": 2, "systemStates": [], "allCreatedPatches": [],
+      "allSketchedStrokes": [{"id": 0, "appliedPositionConstraints": [{"position": {"x": 0, "y": 0, "z": 0}, "isIntersection": "yes"}]}]})");
+  CHECK_THROWS_WITH(soapfilm::load_cassie_session(s.dir, "x"),
+                    Catch::Contains("x.json") && Catch::Contains("appliedPositionConstraints[0]") &&
+                        Catch::Contains("'isIntersection' must be true or false"));
+  s.write("raw_data/x.json", R"({"sketchSystem": 2, "systemStates": [], "allCreatedPatches": [],
+      "allSketchedStrokes": [{"id": 0, "appliedPositionConstraints": [{"position": {"x": 0, "y": 0, "z": 0}, "isIntersection": true}]}]})");
+  const auto logged = soapfilm::load_cassie_session(s.dir, "x");
+  REQUIRE(logged.logs.count(0) == 1);
+  CHECK(logged.logs.at(0).applied_intersection == std::vector<std::optional<bool>>{true});
+  REQUIRE(logged.warnings.size() == 1);
+  CHECK_THAT(logged.warnings[0], Catch::Contains("x.json") && Catch::Contains("twins get no constraint log"));
 }

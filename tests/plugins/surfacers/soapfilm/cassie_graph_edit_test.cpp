@@ -6,6 +6,8 @@
 
 #include "cassie_graph.hpp"
 #include "cassie_graph_edit.hpp"
+#include "curve_graph.hpp"
+#include "cycle_search.hpp"
 
 using namespace sketchlab;
 
@@ -164,4 +166,54 @@ TEST_CASE("a meeting reuses the new curve's node within 0.5 delta before the old
     CHECK(n->incidences.size() == (new_first ? 3u : 2u));
     CHECK(m->incidences.size() == (new_first ? 2u : 3u));
   }
+}
+
+TEST_CASE("a joint near a logged applied intersection meets the old curve 0.5 mm off it", "[soapfilm]") {
+  // CASSIE app, items 21–22: the graph's intersections are the intersection
+  // constraints the solve applied, though it may leave the end off the old
+  // curve (vintage_car's stroke 530, 0.73 mm). A, then B from A's start, then
+  // C from B's end to 0.5 mm above A at x = 0.7: with C's log holding an
+  // applied intersection at (0.7, 0, 0) and logged_meets, C's end splits A
+  // and closes the triangle; unlogged, or logged as no intersection, or with
+  // logged_meets off, C's end hangs free and nothing closes.
+  const Curve a = straight({0, 0, 0}, {1, 0, 0}), b = straight({0, 0, 0}, {0.7, 0.5, 0}),
+              c = straight({0.7, 0.5, 0}, {0.7, 0.0005, 0});
+  auto cycles_through_c = [&](const CassieConstraintLog* log, double logged_meets, bool logged_only) {
+    soapfilm::CassieGraphParams params;
+    params.logged_meets = logged_meets;
+    params.logged_only = logged_only;
+    Network net;
+    net.apply(soapfilm::cassie_graph_edit(net, {{1, a}}, params));
+    net.apply(soapfilm::cassie_graph_edit(net, {{2, b}}, params));
+    net.apply(soapfilm::cassie_graph_edit(net, {{3, c, 1.0, log}}, params));
+    soapfilm::CurveGraph graph(net);
+    soapfilm::CycleSearcher searcher(graph, {});
+    std::size_t found = 0;
+    for (const auto& [id, curve] : net.curves())
+      if (curve.source_stroke == 3)
+        for (int s : graph.segments_of(id)) found += searcher.search_segment(s).size();
+    return found;
+  };
+  CassieConstraintLog logged;
+  logged.applied = {Vec3(0.7, 0, 0), Vec3(0.7, 0.5, 0)};
+  logged.applied_intersection = {true, true};
+  CHECK(cycles_through_c(&logged, 0.5, false) > 0);
+  CHECK(cycles_through_c(&logged, 0.5, true) > 0);  // C's start is logged too
+  CHECK(cycles_through_c(&logged, 0.0, false) == 0);
+  CHECK(cycles_through_c(nullptr, 0.5, false) == 0);
+  CassieConstraintLog plane = logged;  // a plane or grid constraint there
+  plane.applied_intersection = {false, true};
+  CHECK(cycles_through_c(&plane, 0.5, false) == 0);
+  CassieConstraintLog bare = logged;  // an older export: a bare point on A is an intersection
+  bare.applied_intersection = {std::nullopt, std::nullopt};
+  CHECK(cycles_through_c(&bare, 0.5, false) > 0);
+  CassieConstraintLog elsewhere = logged;  // logged 2 cm along A: too far from C's end
+  elsewhere.applied[0] = Vec3(0.72, 0, 0);
+  CHECK(cycles_through_c(&elsewhere, 0.5, false) == 0);
+  // logged_only: C's start, on B's end node, meets B only where it is logged.
+  CassieConstraintLog end_only = logged;
+  end_only.applied = {Vec3(0.7, 0, 0)};
+  end_only.applied_intersection = {true};
+  CHECK(cycles_through_c(&end_only, 0.5, false) > 0);
+  CHECK(cycles_through_c(&end_only, 0.5, true) == 0);
 }

@@ -1,5 +1,6 @@
 // Cycle detection and patch upkeep through the kernel Session.
 #include <catch2/catch.hpp>
+#include <optional>
 #include <set>
 
 #include "cycle_search.hpp"
@@ -302,6 +303,46 @@ TEST_CASE("a crossed patch found again over the same pieces of curve keeps its i
   REQUIRE(s.network().patches().count(square));
   CHECK(s.network().patches().at(square) == before);
   CHECK(patch_curves(s.network()) == std::multiset<std::set<CurveId>>{{1, 2, 3, 4}, {1, 2, 3, 5}, {1, 3, 4, 5}});
+}
+
+TEST_CASE("hand_deleted: a cycle the user deleted the patch of, found again", "[soapfilm]") {
+  // A cube face F deleted by hand, then a cube edge (curve 1) not on F but
+  // on a face next to it deleted: the segments left of that face are
+  // searched again (items 25 and 27) and one of their walks closes F
+  // (README, fourteenth round). forget (the default) makes F again;
+  // not_remade and counts do not.
+  using Curves = std::multiset<std::set<CurveId>>;
+  const auto edges = cube_edges(0.2);
+  const auto run = [&](const std::string& rule, std::set<CurveId>* deleted) {
+    PreparedSession s(edges, make_soapfilm({{"hand_deleted", rule}}));
+    s.draw_all(edges.size());
+    REQUIRE(s.network().patches().size() == 6);
+    std::set<CurveId> at_edge;  // the curves of the faces on curve 1
+    for (const auto& cs : patch_curves(s.network()))
+      if (cs.count(1)) at_edge.insert(cs.begin(), cs.end());
+    std::optional<Vec3> centre;
+    for (const auto& [id, p] : s.network().patches()) {
+      std::set<CurveId> cs;
+      for (const auto& piece : p.boundary) cs.insert(piece.curve);
+      const bool next_to = std::any_of(cs.begin(), cs.end(), [&](CurveId c) { return at_edge.count(c) > 0; });
+      if (centre || cs.count(1) || !next_to) continue;
+      Vec3 sum = Vec3::Zero();
+      for (const Vec3& v : p.mesh.vertices) sum += v;
+      centre = sum / static_cast<double>(p.mesh.vertices.size());
+      *deleted = cs;
+    }
+    REQUIRE(centre);
+    const StepReport by_hand = s.handle(DeletePatchEvent{*centre});
+    CHECK(by_hand.error == "");
+    REQUIRE(s.network().patches().size() == 5);
+    CHECK(s.handle(DeleteStrokeEvent{1}).error == "");
+    return patch_curves(s.network());
+  };
+  std::set<CurveId> face;
+  const Curves forget = run("forget", &face);
+  CHECK(forget.count(face) == 1);
+  CHECK(run("not_remade", &face).count(face) == 0);
+  CHECK(run("counts", &face).count(face) == 0);
 }
 
 TEST_CASE("deleting a cube edge removes exactly its two faces", "[soapfilm]") {
