@@ -24,6 +24,7 @@ Thresholds thresholds(const CassieParams& p, double s) {
   t.mirror = p.mirror_factor * t.delta;
   t.on_plane = p.mirror_on_plane_factor * t.delta;
   t.surface = p.surface_factor * t.delta;
+  t.oracle = p.oracle_radius_factor * t.delta;
   return t;
 }
 
@@ -34,6 +35,7 @@ namespace {
 struct Settings {
   CassieParams params;
   std::string preprocess_rules = "cassie_app";
+  std::string oracle;  // read by the plugin (params.string("oracle"))
 };
 
 const ParamTable<Settings>& parameters() {
@@ -181,6 +183,13 @@ const ParamTable<Settings>& parameters() {
                                                                 {"across", TurnSpan::across}},
                   "item 3's turn of the averaged direction: from one sample to the next, or across the "
                 "sample (between its neighbours' directions; cassie_app preprocessing)")
+          .string("oracle", &Settings::oracle,
+                  "a file of the constraint targets a reference applied per stroke (constraint_oracle.hpp; "
+                  "`sketchlab fidelity --cassie-subset` writes CASSIE's): a listed stroke enforces exactly the "
+                  "constraints within oracle_radius of one, no search; \"\" (default): the search (item 15)")
+          .real("oracle_radius", c(&C::oracle_radius_factor), 0.0, 5.0, "δ",
+                "with oracle: the detected constraint nearest to an applied target, if within this, is enforced "
+                "(δ/2: items 7 and 8 merge or move a target by up to that)")
           .check([](Settings& s) { s.params.preprocess.delta = s.params.delta; });
   return table;
 }

@@ -110,6 +110,11 @@ struct CassieParams {
   MirrorMode mirror = MirrorMode::workspace;
   PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
   double input_spacing_factor = 0.0;     // ×δ, densify the samples first (input_density.hpp; 0: off)
+  // With the reference's own decisions (parameter `oracle`, a file the
+  // plugin reads: constraint_oracle.hpp), how close (×δ) one of our targets
+  // must be to one it applied to count as it: δ/2, the distance items 7
+  // (merge) and 8 (correction) move or merge a target by.
+  double oracle_radius_factor = 0.5;
 };
 
 // Thresholds of one stroke: the factors above times δ(s) = δ/s.
@@ -131,6 +136,7 @@ struct Thresholds {
   double mirror = 0.025;
   double on_plane = 0.002;
   double surface = 0.05;
+  double oracle = 0.01;
 };
 Thresholds thresholds(const CassieParams& p, double workspace_scale);
 
