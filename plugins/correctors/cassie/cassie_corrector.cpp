@@ -39,6 +39,12 @@ struct Context {
   const std::vector<Vec3>* applied = nullptr;  // the reference's decision (constraint_oracle.hpp), or none
 };
 
+// With an oracle and oracle_positions, the matched constraints at the
+// reference's own target positions.
+void oracle_positions(const Context& cx, std::vector<Candidate>& cands) {
+  if (cx.applied && cx.params.oracle_positions) take_oracle_positions(cands, *cx.applied, cx.th.oracle, cx.sketch.network);
+}
+
 // Which constraints the reference applied, counted in the statistics; all
 // true without an oracle.
 std::vector<bool> oracle_choice(Context& cx, const std::vector<Candidate>& cands) {
@@ -71,6 +77,7 @@ bool solver_skipped(const Curve& c, const CassieParams& p, double delta) {
 CorrectedStroke correct_line(Context& cx, const Curve& line) {
   CorrectedStroke cs;
   cs.constraints = detect(cx);
+  oracle_positions(cx, cs.constraints);
   const Vec3 a0 = line.control_points.front(), b0 = line.control_points.back();
   // With an oracle, the line's rules see only the constraints it applied.
   const std::vector<bool> allowed = oracle_choice(cx, cs.constraints);
@@ -212,6 +219,7 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   CorrectedStroke cs;
   std::vector<Candidate> cands = detect(cx);
   correct_targets(cands, fitted_in, net, th.correction, p.correction_points);  // item 8
+  oracle_positions(cx, cands);
   place_on_stroke(cands, fitted_in);
   std::stable_sort(cands.begin(), cands.end(),
                    [](const Candidate& a, const Candidate& b) { return a.t_stroke < b.t_stroke; });

@@ -16,7 +16,8 @@ namespace sketchlab::cassie {
 // targets a reference applied to this stroke (constraint_oracle.hpp). A
 // poly-Bézier then enforces exactly the bound constraints within
 // oracle_radius·δ(s) of one of them (nearest first), with no search; a line's rules
-// (item 17) choose among those only. Statistics "oracle" = 1 and
+// (item 17) choose among those only; with params.oracle_positions the
+// matched ones are placed at the applied targets. Statistics "oracle" = 1 and
 // "oracle_matched" (constraints matched) say it was used.
 Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params,
                           const std::vector<Vec3>* applied = nullptr);

@@ -190,6 +190,9 @@ const ParamTable<Settings>& parameters() {
           .real("oracle_radius", c(&C::oracle_radius_factor), 0.0, 5.0, "δ",
                 "with oracle: the detected constraint nearest to an applied target, if within this, is enforced "
                 "(δ/2: items 7 and 8 merge or move a target by up to that)")
+          .boolean("oracle_positions", c(&C::oracle_positions),
+                   "with oracle: a matched constraint is enforced at the position the reference logged, not at "
+                   "ours (items 7-8 set ours): what still differs is the curve")
           .check([](Settings& s) { s.params.preprocess.delta = s.params.delta; });
   return table;
 }

@@ -115,6 +115,7 @@ struct CassieParams {
   // must be to one it applied to count as it: δ/2, the distance items 7
   // (merge) and 8 (correction) move or merge a target by.
   double oracle_radius_factor = 0.5;
+  bool oracle_positions = false;  // ... and is enforced at the applied target's position, not ours
 };
 
 // Thresholds of one stroke: the factors above times δ(s) = δ/s.

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sketchlab/geometry/closest_point.hpp"
 #include "sketchlab/io/text_file.hpp"
 
 namespace sketchlab::cassie {
@@ -62,6 +63,22 @@ std::vector<bool> oracle_matches(const std::vector<Candidate>& constraints, cons
     if (nearest < constraints.size()) out[nearest] = true;
   }
   return out;
+}
+
+void take_oracle_positions(std::vector<Candidate>& constraints, const std::vector<Vec3>& applied, double radius,
+                           const Network& network) {
+  std::vector<const Vec3*> taken(constraints.size(), nullptr);
+  for (const Vec3& a : applied) {
+    const std::vector<bool> one = oracle_matches(constraints, {a}, radius);
+    for (std::size_t i = 0; i < one.size(); ++i)
+      if (one[i]) taken[i] = &a;
+  }
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    if (!taken[i]) continue;
+    Candidate& c = constraints[i];
+    c.target = *taken[i];
+    if (c.kind == TargetKind::curve) c.t_curve = closest_point(network.curves().at(c.curve).curve, c.target).t;
+  }
 }
 
 }  // namespace sketchlab::cassie

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "constraint_types.hpp"
+#include "sketchlab/network.hpp"
 #include "sketchlab/types.hpp"
 
 namespace sketchlab::cassie {
@@ -34,5 +35,12 @@ ConstraintOracle read_constraint_oracle(const std::filesystem::path& file);
 // one it applied (within δ/2 at 51 of our 950 study targets).
 std::vector<bool> oracle_matches(const std::vector<Candidate>& constraints, const std::vector<Vec3>& applied,
                                  double radius);
+
+// With `oracle_positions`: each matched constraint (oracle_matches) takes
+// the position of the applied target it matched, and a curve target its
+// parameter there on the curve of `network` it lies on (closest point), so
+// that what still differs is the curve, not where items 7-8 put the target.
+void take_oracle_positions(std::vector<Candidate>& constraints, const std::vector<Vec3>& applied, double radius,
+                           const Network& network);
 
 }  // namespace sketchlab::cassie

@@ -73,6 +73,16 @@ TEST_CASE("With an oracle the stroke enforces exactly the constraints the refere
   CHECK(c.stats.extra.at("oracle") == 1);
   CHECK(c.stats.extra.at("oracle_matched") == 1);
 
+  // With oracle_positions the curve passes through the logged target itself.
+  CassieParams at_log = p;
+  at_log.oracle_positions = true;
+  const Correction logged = correct_stroke(f.stroke, f.sketch, at_log, &applied);
+  REQUIRE(crossing(logged, 1).enforced);
+  CHECK((crossing(logged, 1).target - applied[0]).norm() < 1e-12);
+  CHECK(gap(logged, applied[0]) < 1e-9);
+  CHECK(gap(c, applied[0]) > 1e-3);  // without it, at our own target 3 mm away
+  CHECK_FALSE(crossing(logged, 2).enforced);
+
   // Beyond oracle_radius (δ/2 = 1 cm) nothing matches: both free.
   const std::vector<Vec3> far{one.target + Vec3(0.0, 0.015, 0.0)};
   const Correction none = correct_stroke(f.stroke, f.sketch, p, &far);
