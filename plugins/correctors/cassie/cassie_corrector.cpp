@@ -218,7 +218,7 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   const Network& net = cx.sketch.network;
   CorrectedStroke cs;
   std::vector<Candidate> cands = detect(cx);
-  correct_targets(cands, fitted_in, net, th.correction, p.correction_points);  // item 8
+  correct_targets(cands, fitted_in, net, th.correction, p.correction_points, p.correction_keeps_target);  // item 8
   oracle_positions(cx, cands);
   place_on_stroke(cands, fitted_in);
   std::stable_sort(cands.begin(), cands.end(),

@@ -74,6 +74,9 @@ const ParamTable<Settings>& parameters() {
                 "targets tried on the old curve around the detected one, ± this (item 8: δ/2)")
           .integer("correction_points", c(&C::correction_points), 0.0, 64.0, "",
                    "how many targets are tried on the old curve (item 8: 6; 0 keeps the detected target)")
+          .boolean("correction_keeps_target", c(&C::correction_keeps_target),
+                   "the detected target is tried too, kept when nearest the new curve (a second reading of item "
+                   "8; off: the 6 points only)")
           .real("weight_grid", c(&C::weight_grid), 0.0, 100.0, "",
                 "connectivity weight of a grid point or the mirror plane (CHI eq. 3: 1)")
           .real("weight_endpoint", c(&C::weight_endpoint), 0.0, 100.0, "",

@@ -75,6 +75,7 @@ struct CassieParams {
   double node_snap_factor = 1.0;         // ×δ, snap to an end node of the crossed piece (item 8)
   double correction_factor = 0.5;        // ×δ, targets tried on the old curve: ±δ/2
   int correction_points = 6;             // ... this many
+  bool correction_keeps_target = false;  // ... and the detected target itself (a second reading, README)
   double weight_grid = 1.0;              // grid point and mirror plane (CHI eq. 3: 1)
   double weight_endpoint = 1.25;         // at least this within δ of a stroke end (item 11)
   double weight_curve = 1.5;
