@@ -19,7 +19,17 @@ mean deviation gets the first cause that applies:
   the solve: the freehand fit is nearer CASSIE's (the constrained solve moved
     ours away), else other.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_geometry_residual.py [SESSION...]
+It also splits each group's deviation into shape and extent: the pointwise
+distance of the arclength-resampled curves (the fidelity table's mean
+deviation) against the mean distance of each curve to the other as a set
+(shape only), by how many targets CASSIE applied (0, 1, 2 or more), and
+says where the free ends lie: how far short of the raw stroke's end, along
+it, CASSIE's free end and ours stop.
+
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_geometry_residual.py [--positions] [SESSION...]
+
+--positions: also enforce at CASSIE's logged target positions (the
+corrector's oracle_positions), so that only the curve differs.
 """
 import collections
 import glob
@@ -65,6 +75,30 @@ def on_plane(curve, n, d):
     return n is not None and np.all(np.abs(cp @ n - d) < 1e-4)
 
 
+def to_polyline(points, poly):
+    """Distance from each point to the polyline."""
+    a, b = poly[:-1], poly[1:]
+    ab = b - a
+    sq = np.maximum((ab ** 2).sum(1), 1e-30)
+    out = []
+    for p in points:
+        t = np.clip(((p - a) * ab).sum(1) / sq, 0, 1)
+        out.append(np.linalg.norm(a + t[:, None] * ab - p, axis=1).min())
+    return np.array(out)
+
+
+def short_of_end(raw, p, end):
+    """Arclength from the raw stroke's end `end` (0 first, 1 last) to p's projection on it."""
+    q = raw if end == 0 else raw[::-1]
+    cum = np.r_[0, np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))]
+    a, b = q[:-1], q[1:]
+    ab = b - a
+    sq = np.maximum((ab ** 2).sum(1), 1e-30)
+    t = np.clip(((p - a) * ab).sum(1) / sq, 0, 1)
+    i = np.argmin(np.linalg.norm(a + t[:, None] * ab - p, axis=1))
+    return cum[i] + t[i] * np.sqrt(sq[i])
+
+
 def matched(r, applied):
     ours = [np.array(c.target) for c in r.constraints if kind(c) in POS and c.enforced]
     if len(ours) != len(applied):
@@ -72,7 +106,9 @@ def matched(r, applied):
     return all(min((np.linalg.norm(np.array(a) - o) for o in ours), default=np.inf) <= MATCH for a in applied)
 
 
-def main(sessions):
+def main(sessions, positions):
+    shape = collections.defaultdict(list)
+    free_ends = collections.defaultdict(list)
     causes = {"study": collections.Counter(), "showcase": collections.Counter()}
     where = {"study": [], "showcase": []}
     devs = {"study": [], "showcase": []}
@@ -90,7 +126,9 @@ def main(sessions):
             for sid, log in logs.items():
                 f.write(str(sid) + "".join(f" {x!r}" for p in log["applied"] for x in p) + "\n")
             oracle = f.name
-        run = lambda extra: {r.stroke: r for r in sl.teacher_forced(rec, sl.corrector("cassie", {**BASE, "oracle": oracle, **extra}))}
+        raw = {e.stroke.id: np.array(e.stroke.points) for e in rec.events if e.type == "stroke"}
+        base = {**BASE, "oracle": oracle, "oracle_positions": positions}
+        run = lambda extra: {r.stroke: r for r in sl.teacher_forced(rec, sl.corrector("cassie", {**base, **extra}))}
         now = run({})
         untrimmed = run({"trim_dangling": False})
         unhooked = run({"remove_hooks": False})
@@ -109,6 +147,17 @@ def main(sessions):
                 continue
             counts[group]["Beziers"] += 1
             devs[group].append(r.mean_deviation)
+            ref, out = np.array(r.reference_curve.sample(60)), np.array(r.output_curve.sample(60))
+            shape[(group, min(len(log["applied"]), 2))].append(
+                (r.mean_deviation, 0.5 * (to_polyline(ref, out).mean() + to_polyline(out, ref).mean())))
+            for k in range(2):
+                if r.reference_snap[k] or r.output_snap[k]:
+                    continue
+                ours = out[0] if (k == 0) != r.reversed else out[-1]
+                cassie = ref[0] if k == 0 else ref[-1]
+                end = 0 if np.linalg.norm(cassie - raw[sid][0]) < np.linalg.norm(cassie - raw[sid][-1]) else 1
+                free_ends[(group, "first" if end == 0 else "last")].append(
+                    (short_of_end(raw[sid], cassie, end), short_of_end(raw[sid], ours, end)))
             p = profile(r)
             ends, middle = np.r_[p[:4], p[-4:]].mean(), p[4:-4].mean()
             where[group].append((ends, middle))
@@ -150,9 +199,19 @@ def main(sessions):
               f"median {np.median(w[:, 1]):.2f} mm; ends larger at {np.mean(w[:, 0] > w[:, 1]) * 100:.0f} %")
         for cause, k in causes[g].most_common():
             print(f"  {k:5d}  {cause}")
+        for k in range(3):
+            a = np.array(shape.get((g, k), [(np.nan, np.nan)])) * 1000
+            print(f"  {'0 1 2+'.split()[k]:>2} applied ({len(shape.get((g, k), []))}): mean deviation median {np.nanmedian(a[:, 0]):.2f} mm, "
+                  f"shape only {np.nanmedian(a[:, 1]):.2f} mm")
+        for end in ("first", "last"):
+            a = np.array(free_ends.get((g, end), [(np.nan, np.nan)])) * 1000
+            print(f"  free {end} ends ({len(free_ends.get((g, end), []))}): short of the raw end, median / p75: CASSIE "
+                  f"{np.nanmedian(a[:, 0]):.1f} / {np.nanpercentile(a[:, 0], 75):.1f} mm, ours "
+                  f"{np.nanmedian(a[:, 1]):.1f} / {np.nanpercentile(a[:, 1], 75):.1f} mm")
 
 
 if __name__ == "__main__":
-    names = sys.argv[1:] or sorted(os.path.basename(p)[:-6] for p in
+    args = [a for a in sys.argv[1:] if a != "--positions"]
+    names = args or sorted(os.path.basename(p)[:-6] for p in
                                    glob.glob("data/recordings/0?-[12]-?.jsonl") + glob.glob("data/recordings/[a-z]*.jsonl"))
-    main(names)
+    main(names, "--positions" in sys.argv[1:])
