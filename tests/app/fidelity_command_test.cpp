@@ -261,8 +261,10 @@ TEST_CASE("sketchlab fidelity --cassie-subset enforces CASSIE's own applied cons
   const fs::path dir = test::fresh_dir("fidelity_subset");
   const std::string rec = test::source_path("data/recordings/02-2-2.jsonl");  // Patch, 107 strokes, all logged
   const std::string logs = test::source_path("data/cassie/raw_data");
-  const std::string base = std::string(SKETCHLAB_CLI) + " fidelity " + rec + " --corrector cassie --param mirror=plane --no-patches";
-  const auto searched = test::run_captured(base + " --cassie-logs " + logs + " --csv-dir " + (dir / "searched").string());
+  const std::string base =
+      std::string(SKETCHLAB_CLI) + " fidelity " + rec + " --corrector cassie --param mirror=plane --no-patches";
+  const auto searched =
+      test::run_captured(base + " --cassie-logs " + logs + " --csv-dir " + (dir / "searched").string());
   const auto subset =
       test::run_captured(base + " --cassie-logs " + logs + " --cassie-subset --csv-dir " + (dir / "subset").string());
   INFO(subset.output);

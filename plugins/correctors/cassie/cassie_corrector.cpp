@@ -42,7 +42,8 @@ struct Context {
 // With an oracle and oracle_positions, the matched constraints at the
 // reference's own target positions.
 void oracle_positions(const Context& cx, std::vector<Candidate>& cands) {
-  if (cx.applied && cx.params.oracle_positions) take_oracle_positions(cands, *cx.applied, cx.th.oracle, cx.sketch.network);
+  if (cx.applied && cx.params.oracle_positions)
+    take_oracle_positions(cands, *cx.applied, cx.th.oracle, cx.sketch.network);
 }
 
 // Which constraints the reference applied, counted in the statistics; all
@@ -230,7 +231,8 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   SearchSettings st = search_settings(p, th);
   set_closure(fitted, binding, th.closure, st);
   cs.closure_considered = st.closure;
-  const SearchResult sr = cx.applied ? oracle_subset(cx, binding, cands, st) : greedy_search(binding, cands, st);  // items 13–15
+  const SearchResult sr =  // items 13–15, or the reference's own subset
+      cx.applied ? oracle_subset(cx, binding, cands, st) : greedy_search(binding, cands, st);
   cs.enforced.assign(cands.size(), false);
   apply_solution(cx, fitted, binding, st, sr, cs);
   std::vector<int> anchor = binding.anchor;

@@ -45,7 +45,8 @@ ConstraintOracle read_constraint_oracle(const std::filesystem::path& file) {
     }
     if (numbers.size() % 3 != 0) fail(std::to_string(numbers.size()) + " coordinates, not a multiple of 3");
     std::vector<Vec3> targets;
-    for (std::size_t i = 0; i < numbers.size(); i += 3) targets.emplace_back(numbers[i], numbers[i + 1], numbers[i + 2]);
+    for (std::size_t i = 0; i < numbers.size(); i += 3)
+      targets.emplace_back(numbers[i], numbers[i + 1], numbers[i + 2]);
     if (!out.emplace(static_cast<StrokeId>(id), std::move(targets)).second)
       fail("stroke " + id_text + " is listed twice");
   }

@@ -31,8 +31,8 @@ ConstraintOracle read_constraint_oracle(const std::filesystem::path& file);
 
 // Per constraint: whether it is the one nearest to one of the `applied`
 // targets (ties: the first) and within `radius` (m) of it. Nearest, not every
-// one within the radius: a target the reference rejected often lies near
-// one it applied (within δ/2 at 51 of our 950 study targets).
+// one within the radius: targets the reference rejected lie near ones it
+// applied (73 of our 950 study targets are within δ/2 of both).
 std::vector<bool> oracle_matches(const std::vector<Candidate>& constraints, const std::vector<Vec3>& applied,
                                  double radius);
 
