@@ -1,8 +1,8 @@
 // `sketchlab fidelity DIR_OR_RECORDING... --corrector NAME [--param k=v ...]
-// [--track cassie] [--csv-dir DIR] [--cassie-logs DIR [--no-patches] [--cassie-subset]]`: the teacher-forced comparison
-// (kernel run/teacher_forced.hpp) over many sessions at once, summarised per
-// CASSIE system (Freehand / Armature / Patch / showcase), for the study
-// sessions together and for all.
+// [--track cassie] [--csv-dir DIR] [--cassie-logs DIR [--no-patches] [--cassie-subset]]`:
+// the teacher-forced comparison (kernel run/teacher_forced.hpp) over many
+// sessions at once, summarised per CASSIE system (Freehand / Armature /
+// Patch / showcase), for the study sessions together and for all.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -147,9 +147,10 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
                 "With --cassie-logs: do not rebuild CASSIE's patches (raw_data allCreatedPatches, meshed by the "
                 "soapfilm surfacer) for each stroke; without them on-surface projection never acts");
   cmd->add_flag("--cassie-subset", o->cassie_subset,
-                "With --cassie-logs: each logged stroke enforces exactly the constraints we detect within the "
-                "corrector's oracle_radius of one CASSIE applied (mirrored twins: their twin's, reflected), no "
-                "search (the corrector's `oracle` parameter); strokes without a log are searched as usual")
+                "With --cassie-logs: each logged stroke enforces, of the constraints we detect, the one nearest "
+                "each target CASSIE applied, within the corrector's oracle_radius (mirrored twins: their twin's "
+                "log, reflected), and rejects the rest, no search (the corrector's `oracle` parameter); strokes "
+                "without a log are searched as usual")
       ->needs("--cassie-logs");
   cmd->add_option("--near", o->near,
                   "Distance (m) within which a constraint target is an end's, for --causes (default 0.02)");

@@ -188,8 +188,9 @@ const ParamTable<Settings>& parameters() {
                 "sample (between its neighbours' directions; cassie_app preprocessing)")
           .string("oracle", &Settings::oracle,
                   "a file of the constraint targets a reference applied per stroke (constraint_oracle.hpp; "
-                  "`sketchlab fidelity --cassie-subset` writes CASSIE's): a listed stroke enforces exactly the "
-                  "constraints within oracle_radius of one, no search; \"\" (default): the search (item 15)")
+                  "`sketchlab fidelity --cassie-subset` writes CASSIE's): a listed stroke enforces the constraint "
+                  "nearest each applied target (within oracle_radius), no search; \"\" (default): the search "
+                  "(item 15)")
           .real("oracle_radius", c(&C::oracle_radius_factor), 0.0, 5.0, "δ",
                 "with oracle: the detected constraint nearest to an applied target, if within this, is enforced "
                 "(δ/2: items 7 and 8 merge or move a target by up to that)")
