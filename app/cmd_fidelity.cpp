@@ -1,16 +1,18 @@
 // `sketchlab fidelity DIR_OR_RECORDING... --corrector NAME [--param k=v ...]
-// [--track cassie] [--csv-dir DIR] [--cassie-logs DIR [--no-patches]]`: the teacher-forced comparison
-// (kernel run/teacher_forced.hpp) over many sessions at once, summarised per
-// CASSIE system (Freehand / Armature / Patch / showcase), for the study
-// sessions together and for all.
+// [--track cassie] [--csv-dir DIR] [--cassie-logs DIR [--no-patches] [--cassie-subset]]`:
+// the teacher-forced comparison (kernel run/teacher_forced.hpp) over many
+// sessions at once, summarised per CASSIE system (Freehand / Armature /
+// Patch / showcase), for the study sessions together and for all.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "cassie_subset.hpp"
 #include "commands.hpp"
 #include "fidelity_causes.hpp"
 #include "plugin_arguments.hpp"
@@ -35,6 +37,7 @@ struct FidelityOptions {
   bool causes = false;
   std::string cassie_logs;
   bool no_patches = false;
+  bool cassie_subset = false;
   double near = 0.02;
 };
 
@@ -143,6 +146,12 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-patches", o->no_patches,
                 "With --cassie-logs: do not rebuild CASSIE's patches (raw_data allCreatedPatches, meshed by the "
                 "soapfilm surfacer) for each stroke; without them on-surface projection never acts");
+  cmd->add_flag("--cassie-subset", o->cassie_subset,
+                "With --cassie-logs: each logged stroke enforces, of the constraints we detect, the one nearest "
+                "each target CASSIE applied, within the corrector's oracle_radius (mirrored twins: their twin's "
+                "log, reflected), and rejects the rest, no search (the corrector's `oracle` parameter); strokes "
+                "without a log are searched as usual")
+      ->needs("--cassie-logs");
   cmd->add_option("--near", o->near,
                   "Distance (m) within which a constraint target is an end's, for --causes (default 0.02)");
   cmd->callback([o, &exit_code] {
@@ -168,30 +177,50 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, std::size_t> cause_ends;
     std::map<std::string, std::map<std::string, EndDistances>> end_distances;
     std::map<std::string, DecisionCounts> decisions;  // by row name
+    std::size_t unlogged_total = 0;
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
       const std::string session = f.stem().string();
       opt.surfacer = surfacer.get();
       opt.patches = surfacer ? cassie_reference_patches(rec, o->cassie_logs, session) : std::vector<ReferencePatch>{};
+      std::map<StrokeId, CassieConstraintLog> logs;
+      if (!o->cassie_logs.empty()) {
+        logs = read_cassie_constraint_logs(cassie_raw_data_file(rec, o->cassie_logs, session));
+        add_mirrored_twin_logs(rec, logs);
+      }
+      std::shared_ptr<Corrector> session_corrector = corrector;
+      std::optional<TemporaryFile> oracle;
+      std::size_t unlogged = 0;
+      if (o->cassie_subset) {
+        oracle.emplace(session + "-oracle", oracle_text(logs));
+        auto with_oracle = params;
+        with_oracle["oracle"] = oracle->path().string();
+        try {
+          session_corrector = host.make_corrector(o->corrector, with_oracle);
+        } catch (const std::exception& e) {
+          throw std::runtime_error("--cassie-subset needs a corrector with an `oracle` parameter (cassie): " +
+                                   std::string(e.what()));
+        }
+        for (const Event& e : rec.events)
+          if (const auto* s = std::get_if<StrokeEvent>(&e.payload)) unlogged += !logs.count(s->stroke.id);
+        unlogged_total += unlogged;
+      }
       std::vector<TeacherForcedStroke> strokes;
       std::vector<std::string> warnings;
       try {
-        strokes = teacher_forced(rec, *corrector, opt, &warnings);
+        strokes = teacher_forced(rec, *session_corrector, opt, &warnings);
       } catch (const std::invalid_argument& e) {
         throw std::runtime_error(f.string() + ": " + e.what() + " (--track chooses one)");
       }
       const std::string group = fidelity_group(rec.header);
       if (!o->csv_dir.empty()) write_text_file(fs::path(o->csv_dir) / (session + ".csv"), teacher_forced_csv(strokes));
       const bool in_study = group == "Armature" || group == "Patch";
-      std::map<StrokeId, CassieConstraintLog> logs;
-      if (!o->cassie_logs.empty()) {
-        logs = read_cassie_constraint_logs(cassie_raw_data_file(rec, o->cassie_logs, session));
-        add_mirrored_twin_logs(rec, logs);
+      if (!o->cassie_logs.empty())
         for (const std::string& key : {session, group, std::string(in_study ? "Armature+Patch" : ""), std::string("all")})
           if (!key.empty()) count_decisions(strokes, logs, decisions[key]);
-      }
       session_rows.push_back(row(session + " (" + group + ")", 1, summarize(strokes), decisions[session]));
       std::cerr << session << ": " << strokes.size() << " strokes";
+      if (o->cassie_subset) std::cerr << ", " << unlogged << " without a CASSIE log (searched as usual)";
       if (!opt.patches.empty())
         std::cerr << ", " << opt.patches.size() << " CASSIE patches (" << warnings.size() << " left out)";
       std::cerr << "\n";
@@ -220,6 +249,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     rows.push_back(row("all", files.size(), summarize(all), decisions["all"]));
     std::cout << "corrector " << o->corrector;
     for (const std::string& p : o->params) std::cout << " " << p;
+    if (o->cassie_subset)
+      std::cout << " --cassie-subset (" << unlogged_total << " strokes without a CASSIE log, searched as usual)";
     std::cout << "\n" << aligned(rows);
     for (const auto& [name, counts] : causes)
       std::cout << "\n" << name << ": " << cause_ends[name] << " ends, snap kind differs at:\n"

@@ -7,6 +7,7 @@
 #include "anchor_binding.hpp"
 #include "brush_detection.hpp"
 #include "cassie_edit.hpp"
+#include "constraint_oracle.hpp"
 #include "input_density.hpp"
 #include "line_beautify.hpp"
 #include "mirror_plane.hpp"
@@ -35,7 +36,25 @@ struct Context {
   bool use_mirror = false;
   ConstraintRef stroke_ref;
   CorrectionStats stats;
+  const std::vector<Vec3>* applied = nullptr;  // the reference's decision (constraint_oracle.hpp), or none
 };
+
+// With an oracle and oracle_positions, the matched constraints at the
+// reference's own target positions.
+void oracle_positions(const Context& cx, std::vector<Candidate>& cands) {
+  if (cx.applied && cx.params.oracle_positions)
+    take_oracle_positions(cands, *cx.applied, cx.th.oracle, cx.sketch.network);
+}
+
+// Which constraints the reference applied, counted in the statistics; all
+// true without an oracle.
+std::vector<bool> oracle_choice(Context& cx, const std::vector<Candidate>& cands) {
+  if (!cx.applied) return std::vector<bool>(cands.size(), true);
+  std::vector<bool> matched = oracle_matches(cands, *cx.applied, cx.th.oracle);
+  cx.stats.extra["oracle"] = 1;
+  cx.stats.extra["oracle_matched"] = static_cast<double>(std::count(matched.begin(), matched.end(), true));
+  return matched;
+}
 
 std::vector<Candidate> detect(Context& cx) {
   DetectionStats ds;
@@ -59,9 +78,17 @@ bool solver_skipped(const Curve& c, const CassieParams& p, double delta) {
 CorrectedStroke correct_line(Context& cx, const Curve& line) {
   CorrectedStroke cs;
   cs.constraints = detect(cx);
+  oracle_positions(cx, cs.constraints);
   const Vec3 a0 = line.control_points.front(), b0 = line.control_points.back();
-  LineResult lr = beautify_line(a0, b0, cs.constraints, cx.th.proximity, cx.th.line_keep, cx.params.angle,
+  // With an oracle, the line's rules see only the constraints it applied.
+  const std::vector<bool> allowed = oracle_choice(cx, cs.constraints);
+  std::vector<Candidate> offered;
+  std::vector<int> index;
+  for (std::size_t i = 0; i < cs.constraints.size(); ++i)
+    if (allowed[i]) offered.push_back(cs.constraints[i]), index.push_back(static_cast<int>(i));
+  LineResult lr = beautify_line(a0, b0, offered, cx.th.proximity, cx.th.line_keep, cx.params.angle,
                                 cx.params.line_axis_snap);
+  for (int& i : lr.enforced) i = index[static_cast<std::size_t>(i)];
   if (!((lr.b - lr.a).norm() > 1e-9) || !lr.a.allFinite() || !lr.b.allFinite()) lr = LineResult{a0, b0, {}, {}, -1};
   cs.curve = make_line(lr.a, lr.b);
   place_on_stroke(cs.constraints, cs.curve);
@@ -105,6 +132,20 @@ void set_closure(const Curve& fitted, const Binding& binding, double closure_dis
     const Vec3 d0 = tangent(fitted, 0.0), d1 = tangent(fitted, fitted.t_max());
     if (std::abs(d0.dot(d1)) > 0.5) st.closure_tangent = (d0 + (d0.dot(d1) >= 0 ? d1 : Vec3(-d1))).normalized();
   }
+}
+
+// The reference's subset instead of item 15's search: every bound
+// constraint it applied.
+SearchResult oracle_subset(Context& cx, const Binding& binding, const std::vector<Candidate>& cands,
+                           const SearchSettings& st) {
+  const std::vector<bool> matched = oracle_choice(cx, cands);
+  std::vector<int> subset;
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (matched[i] && binding.anchor[i] >= 0) subset.push_back(static_cast<int>(i));
+  SearchResult sr;
+  sr.best = evaluate_subset(binding, cands, subset, st);
+  sr.subsets_tried = 1;
+  return sr;
 }
 
 // The best subset's curve (item 15: only a non-finite solve keeps the fit).
@@ -178,7 +219,8 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   const Network& net = cx.sketch.network;
   CorrectedStroke cs;
   std::vector<Candidate> cands = detect(cx);
-  correct_targets(cands, fitted_in, net, th.correction, p.correction_points);  // item 8
+  correct_targets(cands, fitted_in, net, th.correction, p.correction_points, p.correction_keeps_target);  // item 8
+  oracle_positions(cx, cands);
   place_on_stroke(cands, fitted_in);
   std::stable_sort(cands.begin(), cands.end(),
                    [](const Candidate& a, const Candidate& b) { return a.t_stroke < b.t_stroke; });
@@ -189,7 +231,8 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   SearchSettings st = search_settings(p, th);
   set_closure(fitted, binding, th.closure, st);
   cs.closure_considered = st.closure;
-  const SearchResult sr = greedy_search(binding, cands, st);  // items 13–15
+  const SearchResult sr =  // items 13–15, or the reference's own subset
+      cx.applied ? oracle_subset(cx, binding, cands, st) : greedy_search(binding, cands, st);
   cs.enforced.assign(cands.size(), false);
   apply_solution(cx, fitted, binding, st, sr, cs);
   std::vector<int> anchor = binding.anchor;
@@ -246,7 +289,8 @@ void project_on_patches(Context& cx, CorrectedStroke& cs) {
 
 }  // namespace
 
-Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params) {
+Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params,
+                          const std::vector<Vec3>* applied) {
   const auto start = std::chrono::steady_clock::now();
   Correction out;
   const double scale = stroke.workspace_scale > 0 ? stroke.workspace_scale : 1.0;
@@ -262,7 +306,7 @@ Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const Cass
   }
   const Workspace& ws = sketch.workspace;
   Context cx{stroke, sketch, params, thresholds(params, scale), false,
-             {ConstraintRef::Kind::stroke, stroke.id, 0.0}, {}};
+             {ConstraintRef::Kind::stroke, stroke.id, 0.0}, {}, applied};
   cx.use_mirror = params.mirror != MirrorMode::off && ws.mirror_enabled && ws.mirror_normal.norm() > 0;
   cx.stats.extra["hook_cut_start"] = pre.hook_cut[0];
   cx.stats.extra["hook_cut_end"] = pre.hook_cut[1];

@@ -12,6 +12,14 @@ namespace sketchlab::cassie {
 // incidence in nodes_replaced), every constraint considered, statistics.
 // A stroke that cannot be fitted (fewer than 2 distinct samples, zero length)
 // gives a Correction with `error` set and an empty edit.
-Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params);
+// `applied` (not owned; nullptr: the search as usual): the constraint
+// targets a reference applied to this stroke (constraint_oracle.hpp). A
+// poly-Bézier then enforces exactly the bound constraints within
+// oracle_radius·δ(s) of one of them (nearest first), with no search; a line's rules
+// (item 17) choose among those only; with params.oracle_positions the
+// matched ones are placed at the applied targets. Statistics "oracle" = 1 and
+// "oracle_matched" (constraints matched) say it was used.
+Correction correct_stroke(const Stroke& stroke, const Sketch& sketch, const CassieParams& params,
+                          const std::vector<Vec3>* applied = nullptr);
 
 }  // namespace sketchlab::cassie

@@ -24,6 +24,7 @@ Thresholds thresholds(const CassieParams& p, double s) {
   t.mirror = p.mirror_factor * t.delta;
   t.on_plane = p.mirror_on_plane_factor * t.delta;
   t.surface = p.surface_factor * t.delta;
+  t.oracle = p.oracle_radius_factor * t.delta;
   return t;
 }
 
@@ -34,6 +35,7 @@ namespace {
 struct Settings {
   CassieParams params;
   std::string preprocess_rules = "cassie_app";
+  std::string oracle;  // read by the plugin (params.string("oracle"))
 };
 
 const ParamTable<Settings>& parameters() {
@@ -72,6 +74,9 @@ const ParamTable<Settings>& parameters() {
                 "targets tried on the old curve around the detected one, ± this (item 8: δ/2)")
           .integer("correction_points", c(&C::correction_points), 0.0, 64.0, "",
                    "how many targets are tried on the old curve (item 8: 6; 0 keeps the detected target)")
+          .boolean("correction_keeps_target", c(&C::correction_keeps_target),
+                   "the detected target is tried too, kept when nearest the new curve (a second reading of item "
+                   "8; off: the 6 points only)")
           .real("weight_grid", c(&C::weight_grid), 0.0, 100.0, "",
                 "connectivity weight of a grid point or the mirror plane (CHI eq. 3: 1)")
           .real("weight_endpoint", c(&C::weight_endpoint), 0.0, 100.0, "",
@@ -181,6 +186,17 @@ const ParamTable<Settings>& parameters() {
                                                                 {"across", TurnSpan::across}},
                   "item 3's turn of the averaged direction: from one sample to the next, or across the "
                 "sample (between its neighbours' directions; cassie_app preprocessing)")
+          .string("oracle", &Settings::oracle,
+                  "a file of the constraint targets a reference applied per stroke (constraint_oracle.hpp; "
+                  "`sketchlab fidelity --cassie-subset` writes CASSIE's): a listed stroke enforces the constraint "
+                  "nearest each applied target (within oracle_radius), no search; \"\" (default): the search "
+                  "(item 15)")
+          .real("oracle_radius", c(&C::oracle_radius_factor), 0.0, 5.0, "δ",
+                "with oracle: the detected constraint nearest to an applied target, if within this, is enforced "
+                "(δ/2: items 7 and 8 merge or move a target by up to that)")
+          .boolean("oracle_positions", c(&C::oracle_positions),
+                   "with oracle: a matched constraint is enforced at the position the reference logged, not at "
+                   "ours (items 7-8 set ours): what still differs is the curve")
           .check([](Settings& s) { s.params.preprocess.delta = s.params.delta; });
   return table;
 }

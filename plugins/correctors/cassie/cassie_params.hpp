@@ -75,6 +75,7 @@ struct CassieParams {
   double node_snap_factor = 1.0;         // ×δ, snap to an end node of the crossed piece (item 8)
   double correction_factor = 0.5;        // ×δ, targets tried on the old curve: ±δ/2
   int correction_points = 6;             // ... this many
+  bool correction_keeps_target = false;  // ... and the detected target itself (a second reading, README)
   double weight_grid = 1.0;              // grid point and mirror plane (CHI eq. 3: 1)
   double weight_endpoint = 1.25;         // at least this within δ of a stroke end (item 11)
   double weight_curve = 1.5;
@@ -110,6 +111,12 @@ struct CassieParams {
   MirrorMode mirror = MirrorMode::workspace;
   PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
   double input_spacing_factor = 0.0;     // ×δ, densify the samples first (input_density.hpp; 0: off)
+  // With the reference's own decisions (parameter `oracle`, a file the
+  // plugin reads: constraint_oracle.hpp), how close (×δ) one of our targets
+  // must be to one it applied to count as it: δ/2, the distance items 7
+  // (merge) and 8 (correction) move or merge a target by.
+  double oracle_radius_factor = 0.5;
+  bool oracle_positions = false;  // ... and is enforced at the applied target's position, not ours
 };
 
 // Thresholds of one stroke: the factors above times δ(s) = δ/s.
@@ -131,6 +138,7 @@ struct Thresholds {
   double mirror = 0.025;
   double on_plane = 0.002;
   double surface = 0.05;
+  double oracle = 0.01;
 };
 Thresholds thresholds(const CassieParams& p, double workspace_scale);
 

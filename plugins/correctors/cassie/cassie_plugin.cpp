@@ -1,6 +1,7 @@
 // Plugin entry: the CASSIE corrector (see README.md).
 #include "cassie_corrector.hpp"
 #include "cassie_params.hpp"
+#include "constraint_oracle.hpp"
 #include "sketchlab/plugin/plugin_api.hpp"
 
 namespace {
@@ -9,13 +10,17 @@ using namespace sketchlab;
 
 class CassieCorrector : public Corrector {
  public:
-  explicit CassieCorrector(const Params& p) : params_(cassie::params_from(p)) {}
+  explicit CassieCorrector(const Params& p) : params_(cassie::params_from(p)) {
+    if (const std::string& file = p.string("oracle"); !file.empty()) oracle_ = cassie::read_constraint_oracle(file);
+  }
   Correction correct(const Stroke& stroke, const Sketch& sketch) override {
-    return cassie::correct_stroke(stroke, sketch, params_);
+    const auto it = oracle_.find(stroke.id);
+    return cassie::correct_stroke(stroke, sketch, params_, it == oracle_.end() ? nullptr : &it->second);
   }
 
  private:
   cassie::CassieParams params_;
+  cassie::ConstraintOracle oracle_;
 };
 
 PluginDescriptor describe() {

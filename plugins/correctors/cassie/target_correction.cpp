@@ -35,13 +35,13 @@ double parameter_at_offset(const Curve& c, double t, double s) {
 }  // namespace
 
 void correct_targets(std::vector<Candidate>& cands, const Curve& fitted, const Network& net, double span,
-                     int points) {
+                     int points, bool keep_detected) {
   if (points <= 0 || !(span > 0)) return;
   for (Candidate& c : cands) {
     if (c.kind != TargetKind::curve || c.at_curve_end) continue;
     const Curve& old = net.curves().at(c.curve).curve;
     const double t0 = c.t_curve;
-    double best = std::numeric_limits<double>::infinity();
+    double best = keep_detected ? closest_point(fitted, c.target).distance : std::numeric_limits<double>::infinity();
     for (int i = 0; i < points; ++i) {
       const double u = points > 1 ? -1.0 + 2.0 * i / (points - 1) : 0.0;
       const double t = parameter_at_offset(old, t0, u * span);

@@ -13,9 +13,11 @@ namespace sketchlab::cassie {
 // Item 8 (`Beautifier.CorrectIntersections`): a curve target not at an end
 // of its curve is replaced by the nearest to `fitted` of `points` points of
 // the old curve within ±`span` metres of arclength of it (evenly spaced,
-// the two extremes included). Other kinds are left as they are.
+// the two extremes included). Other kinds are left as they are. With
+// `keep_detected` the detected target is tried too (a second reading of
+// item 8's "6 points ... tried": off by default, README).
 void correct_targets(std::vector<Candidate>& constraints, const Curve& fitted, const Network& network,
-                     double span, int points);
+                     double span, int points, bool keep_detected = false);
 
 // Sets t_stroke (closest parameter on `curve`) and distance of each
 // constraint.

@@ -67,3 +67,22 @@ TEST_CASE("Item 11: at a node the tangents align when the curves' tangents point
     }
   }
 }
+
+TEST_CASE("Item 8: the 6 points replace the detected target, correction_keeps_target keeps it when nearest",
+          "[cassie]") {
+  Sketch sketch;
+  add_curve(sketch, straight({0, -0.3, 0}, {0, 0.3, 0}, 1));  // curve 1 along y through the origin
+  const Curve fitted = straight({-0.3, 0, 0.002}, {0.3, 0, 0.002}, 1);  // the new stroke crosses it 2 mm above
+  Candidate c;
+  c.kind = TargetKind::curve;
+  c.curve = 1;
+  c.t_curve = 0.5;
+  c.target = Vec3::Zero();  // the crossing itself
+  std::vector<Candidate> six{c}, seven{c};
+  correct_targets(six, fitted, sketch.network, 0.01, 6);
+  // The six points are ±2, ±6, ±10 mm along y: the nearest is 2 mm off the crossing.
+  CHECK(std::abs(six[0].target.norm() - 0.002) < 1e-6);
+  correct_targets(seven, fitted, sketch.network, 0.01, 6, true);
+  CHECK(seven[0].target.norm() < 1e-12);
+  CHECK(seven[0].t_curve == 0.5);
+}
