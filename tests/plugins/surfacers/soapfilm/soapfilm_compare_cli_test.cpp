@@ -17,7 +17,7 @@ std::string compare() { return test::binary_path("bin/soapfilm_compare"); }
 
 }  // namespace
 
-TEST_CASE("--param with an unknown soapfilm parameter lists the declared ones", "[soapfilm][cli]") {
+TEST_CASE("a --param naming no soapfilm parameter lists the declared ones", "[soapfilm][cli]") {
   std::map<std::string, ParamValue> given;
   soapfilm::parse_param_assignment("edge_length=0.03", given);
   CHECK(std::get<double>(given.at("edge_length")) == 0.03);
