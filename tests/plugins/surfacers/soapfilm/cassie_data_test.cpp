@@ -98,6 +98,10 @@ TEST_CASE("malformed CASSIE graphs fail naming the file and the element", "[soap
              Catch::Contains("stroke 1: segment 1 already belongs to stroke 0"));
   CHECK_THAT(load_error(s, replace(graph_json, "\"strokes\"", "\"strokez\"")),
              Catch::Contains("missing field 'strokes'"));
+  CHECK_THAT(load_error(s, "{\"strokes\": 5, \"segments\": [], \"nodes\": []}"),
+             Catch::Contains("bad.json") && Catch::Contains("the graph: field 'strokes' is not a list"));
+  CHECK_THAT(load_error(s, "{\"strokes\": [], \"segments\": {\"id\": 0}, \"nodes\": []}"),
+             Catch::Contains("the graph: field 'segments' is not a list"));
   CHECK_THAT(load_error(s, replace(graph_json, "{\"id\": 1, \"segments\": [2]}", "{\"id\": 0, \"segments\": [2]}")),
              Catch::Contains("stroke 0 listed twice"));
   CHECK_THAT(load_error(s, replace(graph_json, "\"nodes\": [1, 3]", "\"nodes\": [1]")),
