@@ -18,6 +18,14 @@ std::int64_t id_of(const nlohmann::json& item, const std::string& what) {
   return item.at("id").get<std::int64_t>();
 }
 
+// One of the graph's three lists; anything else is refused naming the field
+// (iterating a number or an object would report its items as bad elements).
+const nlohmann::json& graph_list(const nlohmann::json& graph, const char* key) {
+  const nlohmann::json& list = cassie_field(graph, key, "the graph");
+  if (!list.is_array()) throw std::invalid_argument(std::string("the graph: field '") + key + "' is not a list");
+  return list;
+}
+
 }  // namespace
 
 CassieNetwork load_cassie_network(const std::filesystem::path& path) {
@@ -26,12 +34,12 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
     // Index the segments and nodes (ids unique), then build one curve per
     // stroke from its segments in order.
     std::map<std::int64_t, const nlohmann::json*> segments;
-    for (const auto& s : cassie_field(j, "segments", "the graph")) {
+    for (const auto& s : graph_list(j, "segments")) {
       const std::int64_t id = id_of(s, "a segment");
       if (!segments.emplace(id, &s).second) throw std::invalid_argument("segment " + std::to_string(id) + " listed twice");
     }
     std::map<std::int64_t, Vec3> node_pos;
-    for (const auto& n : cassie_field(j, "nodes", "the graph")) {
+    for (const auto& n : graph_list(j, "nodes")) {
       const std::int64_t id = id_of(n, "a node");
       const std::string at = "node " + std::to_string(id);
       if (!node_pos.emplace(id, cassie_point(cassie_field(n, "position", at), at + ": position")).second)
@@ -42,7 +50,7 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
     Edit edit;
     std::map<std::int64_t, Node> nodes;
     std::map<std::int64_t, std::int64_t> owner;  // segment -> stroke using it
-    for (const auto& stroke : cassie_field(j, "strokes", "the graph")) {
+    for (const auto& stroke : graph_list(j, "strokes")) {
       const std::int64_t sid = id_of(stroke, "a stroke");
       const std::string where = "stroke " + std::to_string(sid);
       if (sid < 0) throw std::invalid_argument(where + ": negative id");

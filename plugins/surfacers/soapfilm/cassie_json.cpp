@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "sketchlab/recording/event_json.hpp"
+
 namespace sketchlab::soapfilm {
 
 nlohmann::json read_cassie_json(const std::filesystem::path& path) {
@@ -38,6 +40,11 @@ Vec3 cassie_point(const nlohmann::json& v, const std::string& what) {
     throw std::invalid_argument(what + ": expected a point [x, y, z] or {x, y, z}");
   }
   if (!p.allFinite()) throw std::invalid_argument(what + ": non-finite coordinate");
+  // The recordings' bound: beyond it lengths overflow (an arclength of 1e300 m
+  // recursed for hours instead of failing).
+  if (p.cwiseAbs().maxCoeff() > recording_max_coordinate)
+    throw std::invalid_argument(what + ": coordinate of magnitude above " +
+                                std::to_string(static_cast<long long>(recording_max_coordinate)) + " m (absurd)");
   return p;
 }
 

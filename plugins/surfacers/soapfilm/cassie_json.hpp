@@ -26,8 +26,8 @@ nlohmann::json read_cassie_json(const std::filesystem::path& path);
 const nlohmann::json& cassie_field(const nlohmann::json& item, const char* key, const std::string& what);
 
 // [x, y, z] (array form) or {x, y, z} (object form, raw_data) as a point;
-// throws std::invalid_argument naming `what` for another shape or a
-// non-finite coordinate.
+// throws std::invalid_argument naming `what` for another shape, a
+// non-finite coordinate or one beyond recording_max_coordinate (1e6 m).
 Vec3 cassie_point(const nlohmann::json& value, const std::string& what);
 
 // Appends CASSIE pieces (cubic: 4 points; line: 2 points, stored as a cubic

@@ -37,11 +37,13 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cassie_graph.hpp"
 #include "cassie_replay.hpp"
 #include "sketchlab/lab/distribution.hpp"
+#include "sketchlab/plugin/params.hpp"
 
 using namespace sketchlab;
 using namespace sketchlab::soapfilm;
@@ -103,6 +105,15 @@ const char* departure_name(Departure d) {
   return "–";
 }
 
+// A numeric option's value >= 0, checked by the kernel's parameter parser: a
+// bad one fails naming the option and the allowed values.
+double option_distance(const std::string& option, const std::string& text, const std::string& unit) {
+  ParamSpec spec{option, ParamType::real, 0.0};
+  spec.min = 0.0;
+  spec.unit = unit;
+  return std::get<double>(parse_param_value(spec, text));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -121,15 +132,12 @@ int main(int argc, char** argv) {
         parse_param_assignment(argv[++i], given);
       } else if (a == "--meets" && i + 1 < argc) {
         // Replay: a joint this close (m) to an alive curve meets it.
-        options.graph.on_curve = std::stod(argv[++i]);
-        if (!(options.graph.on_curve >= 0.0)) throw std::invalid_argument("--meets: expected a distance >= 0 (m)");
+        options.graph.on_curve = option_distance(a, argv[++i], "m");
       } else if (a == "--logged-meets" && i + 1 < argc) {
         // Replay: joints near a logged applied intersection meet curves this far (×δ).
-        options.graph.logged_meets = std::stod(argv[++i]);
-        if (!(options.graph.logged_meets >= 0.0)) throw std::invalid_argument("--logged-meets: expected a multiple of δ >= 0");
+        options.graph.logged_meets = option_distance(a, argv[++i], "×δ");
       } else if (a == "--logged-on-curve" && i + 1 < argc) {
-        options.graph.logged_on_curve = std::stod(argv[++i]);
-        if (!(options.graph.logged_on_curve >= 0.0)) throw std::invalid_argument("--logged-on-curve: expected a distance >= 0 (m)");
+        options.graph.logged_on_curve = option_distance(a, argv[++i], "m");
       } else if (a == "--logged-only") {
         options.graph.logged_only = true;
       } else if (a == "--old-nodes-first") {
@@ -155,10 +163,16 @@ int main(int argc, char** argv) {
       } else if (!dir_given && std::filesystem::is_directory(a)) {
         dir = a;
         dir_given = true;
+      } else if (a.find('/') != std::string::npos) {
+        throw std::invalid_argument(a + ": no such directory (DATA_DIR holds sketch_history/, sketch_graph/, raw_data/)");
       } else {
         sessions.push_back(a);
       }
     }
+    for (const std::string& name : sessions)
+      if (!std::filesystem::exists(dir / "sketch_history" / (name + ".json")))
+        throw std::invalid_argument("no session '" + name + "' in " + (dir / "sketch_history").string() +
+                                    " (a SESSION is the name of one of its .json files)");
   } catch (const std::exception& e) {
     std::cerr << "soapfilm_compare: " << e.what() << "\n";
     return 2;

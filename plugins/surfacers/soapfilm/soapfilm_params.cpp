@@ -111,9 +111,13 @@ void parse_param_assignment(const std::string& assignment, std::map<std::string,
   const auto eq = assignment.find('=');
   const std::string name = assignment.substr(0, eq);
   const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
-  if (eq == std::string::npos || spec == specs.end())
+  if (eq == std::string::npos)
     throw std::invalid_argument("--param " + assignment +
                                 ": expected NAME=VALUE with NAME a soapfilm parameter (sketchlab plugins soapfilm)");
+  if (spec == specs.end()) {
+    validate_params(specs, {{name, ParamValue{}}});  // the kernel's error for an unknown name, listing the declared ones
+    throw std::logic_error("validate_params accepted an unknown parameter '" + name + "'");
+  }
   given[spec->name] = parse_param_value(*spec, assignment.substr(eq + 1));
 }
 

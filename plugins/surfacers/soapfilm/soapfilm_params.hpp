@@ -28,7 +28,8 @@ std::vector<ParamSpec> soapfilm_param_specs();
 SoapfilmParams soapfilm_params(const Params& params);
 // Reads one "NAME=VALUE" command-line assignment of a soapfilm parameter (the
 // tools' --param) into `given`. Throws std::invalid_argument naming the
-// argument when NAME is not a parameter, and ParamError for a bad value.
+// argument when it has no '=', ParamError listing the declared names when
+// NAME is not a parameter, and ParamError for a bad value.
 void parse_param_assignment(const std::string& assignment, std::map<std::string, ParamValue>& given);
 
 }  // namespace sketchlab::soapfilm

@@ -92,12 +92,18 @@ TEST_CASE("malformed CASSIE graphs fail naming the file and the element", "[soap
              Catch::Contains("stroke 0: segment 0: piece 0 has 3 control points; need 4 (cubic) or 2 (line)"));
   CHECK_THAT(load_error(s, replace(graph_json, "[[[0.1,0,0],[0.1,0.1,0]]]", "[[[0.1,0,0],[0.1,\"x\",0]]]")),
              Catch::Contains("stroke 1: segment 2: piece 0, point 1: coordinate 1 is not a number"));
+  CHECK_THAT(load_error(s, replace(graph_json, "[[[0.1,0,0],[0.1,0.1,0]]]", "[[[0.1,0,0],[0.1,1e300,0]]]")),
+             Catch::Contains("stroke 1: segment 2: piece 0, point 1: coordinate of magnitude above 1000000 m"));
   CHECK_THAT(load_error(s, replace(graph_json, "[[[0.1,0,0],[0.13", "[[[0.3,0,0],[0.13")),
              Catch::Contains("stroke 0: segment 1 starts") && Catch::Contains("previous segment"));
   CHECK_THAT(load_error(s, replace(graph_json, "[2]}]", "[1]}]")),
              Catch::Contains("stroke 1: segment 1 already belongs to stroke 0"));
   CHECK_THAT(load_error(s, replace(graph_json, "\"strokes\"", "\"strokez\"")),
              Catch::Contains("missing field 'strokes'"));
+  CHECK_THAT(load_error(s, "{\"strokes\": 5, \"segments\": [], \"nodes\": []}"),
+             Catch::Contains("bad.json") && Catch::Contains("the graph: field 'strokes' is not a list"));
+  CHECK_THAT(load_error(s, "{\"strokes\": [], \"segments\": {\"id\": 0}, \"nodes\": []}"),
+             Catch::Contains("the graph: field 'segments' is not a list"));
   CHECK_THAT(load_error(s, replace(graph_json, "{\"id\": 1, \"segments\": [2]}", "{\"id\": 0, \"segments\": [2]}")),
              Catch::Contains("stroke 0 listed twice"));
   CHECK_THAT(load_error(s, replace(graph_json, "\"nodes\": [1, 3]", "\"nodes\": [1]")),
