@@ -30,13 +30,15 @@ double gauss_legendre(const std::array<Vec3, 4>& p, double a, double b) {
 }
 
 // Adaptive quadrature: accept an interval when the 7-point rule agrees with
-// the sum over its halves within the (halved per level) tolerance.
+// the sum over its halves within the (halved per level) tolerance. A length
+// that overflows (coordinates near 1e300) never agrees: it is returned as
+// is, not refined 2^40 times.
 double adaptive(const std::array<Vec3, 4>& p, double a, double b, double whole, double tol,
                 int depth) {
   const double m = 0.5 * (a + b);
   const double left = gauss_legendre(p, a, m);
   const double right = gauss_legendre(p, m, b);
-  if (depth >= 40 || std::abs(left + right - whole) <= tol) return left + right;
+  if (depth >= 40 || !std::isfinite(left + right) || std::abs(left + right - whole) <= tol) return left + right;
   return adaptive(p, a, m, left, 0.5 * tol, depth + 1) +
          adaptive(p, m, b, right, 0.5 * tol, depth + 1);
 }

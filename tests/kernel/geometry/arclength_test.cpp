@@ -93,3 +93,13 @@ TEST_CASE("arclength sampling of a zero-length curve stays finite", "[geometry][
   REQUIRE(pts.size() == 2);
   for (const Vec3& p : pts) REQUIRE(p.allFinite());
 }
+
+TEST_CASE("an arclength that overflows comes back non-finite without refining", "[geometry][arclength]") {
+  // Before the guard the quadrature never agreed with itself and recursed to
+  // depth 40 on each half (a 1e300 control point in a CASSIE graph hung
+  // soapfilm_compare).
+  Curve c;
+  c.control_points = {Vec3(0, 0, 0), Vec3(1e300, 0, 0), Vec3(1e300, 1e300, 0), Vec3(0, 1e300, 1e300)};
+  c.sharp = {false, false};
+  REQUIRE_FALSE(std::isfinite(arclength(c)));
+}

@@ -6,7 +6,8 @@
 namespace sketchlab {
 
 // Arclength of the curve between parameters t0 <= t1 (metres), by adaptive
-// Gauss–Legendre quadrature to relative tolerance 1e-9.
+// Gauss–Legendre quadrature to relative tolerance 1e-9. A length that does
+// not fit a double (coordinates near 1e300) comes back non-finite, at once.
 double arclength(const Curve& curve, double t0, double t1);
 double arclength(const Curve& curve);
 
