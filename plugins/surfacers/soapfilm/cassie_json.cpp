@@ -40,8 +40,8 @@ Vec3 cassie_point(const nlohmann::json& v, const std::string& what) {
     throw std::invalid_argument(what + ": expected a point [x, y, z] or {x, y, z}");
   }
   if (!p.allFinite()) throw std::invalid_argument(what + ": non-finite coordinate");
-  // The recordings' bound: beyond it lengths overflow (an arclength of 1e300 m
-  // recursed for hours instead of failing).
+  // The recordings' bound: far beyond it lengths overflow (a 1e300 m control
+  // point hung soapfilm_compare in the arclength quadrature).
   if (p.cwiseAbs().maxCoeff() > recording_max_coordinate)
     throw std::invalid_argument(what + ": coordinate of magnitude above " +
                                 std::to_string(static_cast<long long>(recording_max_coordinate)) + " m (absurd)");
