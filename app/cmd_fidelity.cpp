@@ -252,6 +252,11 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     if (o->cassie_subset)
       std::cout << " --cassie-subset (" << unlogged_total << " strokes without a CASSIE log, searched as usual)";
     std::cout << "\n" << aligned(rows);
+    // CASSIE's Freehand system only fitted its strokes (data/cassie/README.md):
+    // its row measures a corrector against plain fits, not against neatening.
+    if (groups.count("Freehand") && o->corrector != "freehand")
+      std::cout << "(Freehand: CASSIE's Freehand system only fits its strokes; compare those sessions with "
+                   "--corrector freehand)\n";
     for (const auto& [name, counts] : causes)
       std::cout << "\n" << name << ": " << cause_ends[name] << " ends, snap kind differs at:\n"
                 << cause_table(counts, cause_ends[name]);

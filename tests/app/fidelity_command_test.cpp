@@ -46,6 +46,8 @@ TEST_CASE("sketchlab fidelity prints the table per system and writes a CSV per s
   CHECK(patch);
   CHECK(freehand);
   CHECK(all);
+  // The Freehand row under another corrector says how to read those sessions.
+  CHECK(r.output.find("compare those sessions with --corrector freehand") != std::string::npos);
   CHECK(lines_of(dir / "csv" / "01-2-2.csv") == 1 + 32);
   CHECK(lines_of(dir / "csv" / "01-0-1.csv") == 1 + 56);
   // summary.csv: the header, the two sessions, the groups and "all".

@@ -73,6 +73,12 @@ CassieNetwork load_cassie_network(const std::filesystem::path& path) {
         if (const auto [it, fresh] = owner.emplace(gid, sid); !fresh)
           throw std::invalid_argument(at + " already belongs to stroke " + std::to_string(it->second));
         const nlohmann::json& seg = *found->second;
+        // The segment names its stroke too (sketch_graph schema); a graph
+        // where the two disagree is not CASSIE's (none of the bundled ones).
+        if (seg.contains("stroke_id") &&
+            !(seg["stroke_id"].is_number_integer() && seg["stroke_id"].get<std::int64_t>() == sid))
+          throw std::invalid_argument(at + ": its stroke_id " + seg["stroke_id"].dump() + " is not stroke " +
+                                      std::to_string(sid) + ", which lists it");
         std::vector<Vec3>& cp = curve.control_points;
         const double t_start = cp.empty() ? 0.0 : static_cast<double>((cp.size() - 1) / 3);
         const nlohmann::json& pieces = cassie_field(seg, "ctrl_pts", at);

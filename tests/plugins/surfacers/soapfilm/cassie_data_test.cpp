@@ -106,6 +106,8 @@ TEST_CASE("malformed CASSIE graphs fail naming the file and the element", "[soap
              Catch::Contains("the graph: field 'segments' is not a list"));
   CHECK_THAT(load_error(s, replace(graph_json, "{\"id\": 1, \"segments\": [2]}", "{\"id\": 0, \"segments\": [2]}")),
              Catch::Contains("stroke 0 listed twice"));
+  CHECK_THAT(load_error(s, replace(graph_json, "\"stroke_id\": 1,", "\"stroke_id\": 0,")),
+             Catch::Contains("stroke 1: segment 2: its stroke_id 0 is not stroke 1, which lists it"));
   CHECK_THAT(load_error(s, replace(graph_json, "\"nodes\": [1, 3]", "\"nodes\": [1]")),
              Catch::Contains("stroke 1: segment 2: needs 2 nodes"));
 }
