@@ -39,7 +39,7 @@ struct State {
 
 }  // namespace
 
-CassieSession load_cassie_session(const std::filesystem::path& dir, const std::string& name) {
+CassieSession load_cassie_session(const std::filesystem::path& dir, const std::string& name, bool constraint_logs) {
   const std::filesystem::path history_path = dir / "sketch_history" / (name + ".json");
   const std::filesystem::path raw_path = dir / "raw_data" / (name + ".json");
   const nlohmann::json history = read_cassie_json(history_path);
@@ -166,6 +166,7 @@ CassieSession load_cassie_session(const std::filesystem::path& dir, const std::s
   } catch (const std::exception& e) {
     throw CassieFormatError(raw_path.string() + ": " + e.what());
   }
+  if (!constraint_logs) return out;
   try {
     out.logs = read_cassie_constraint_logs(raw_path);  // its messages name the file, element and field
   } catch (const std::exception& e) {

@@ -47,20 +47,24 @@ struct CassieSession {
   // CASSIE's constraint log per stroke id (raw_data allSketchedStrokes:
   // the position constraints it applied, CASSIE app, item 21), each mirrored
   // twin given its drawn twin's reflected (lab's add_mirrored_twin_logs);
-  // empty for sessions that log none.
+  // empty unless asked for (load_cassie_session) and for sessions that log
+  // none.
   std::map<StrokeId, CassieConstraintLog> logs;
   std::vector<std::string> warnings;  // data quirks handled (file, element, what was done)
 };
 
-// Loads <dir>/sketch_history/<name>.json and <dir>/raw_data/<name>.json
-// (the logs with the lab's CASSIE importer: read_cassie_constraint_logs, and
-// import_cassie for the mirror plane and twins; a history it refuses, e.g.
-// without input samples, is a warning and leaves the twins without logs).
+// Loads <dir>/sketch_history/<name>.json and <dir>/raw_data/<name>.json.
+// With `constraint_logs` (only the replay's logged_meets reads them), also
+// the logs, with the lab's CASSIE importer: read_cassie_constraint_logs, and
+// import_cassie for the mirror plane and twins, which parses both files
+// again; a history it refuses, e.g. without input samples, is a warning and
+// leaves the twins without logs.
 // Quirks of real data are warnings: a stroke deleted before it was created
 // (flower: its id was deleted, then re-created) takes the first delete-stroke
 // entry of raw_data after its creation, or stays alive if there is none.
 // Throws CassieFormatError naming the file and element (stroke, patch,
 // system state, field) for anything else malformed.
-CassieSession load_cassie_session(const std::filesystem::path& dir, const std::string& name);
+CassieSession load_cassie_session(const std::filesystem::path& dir, const std::string& name,
+                                  bool constraint_logs = false);
 
 }  // namespace sketchlab::soapfilm

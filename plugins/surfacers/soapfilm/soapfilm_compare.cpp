@@ -201,7 +201,7 @@ int main(int argc, char** argv) {
     Row row;
     row.session = name;
     try {
-      const CassieSession session = load_cassie_session(dir, name);
+      const CassieSession session = load_cassie_session(dir, name, options.graph.logged_meets > 0.0);
       row.system = session.system;
       const auto graph = dir / "sketch_graph" / (name + ".json");
       row.has_graph = std::filesystem::exists(graph);

@@ -113,7 +113,7 @@ TEST_CASE("malformed CASSIE graphs fail naming the file and the element", "[soap
 }
 
 TEST_CASE("CASSIE sessions: curves, times, patch log, the flower quirk is a warning", "[soapfilm]") {
-  const auto flower = soapfilm::load_cassie_session(test::source_path("data/cassie"), "flower");
+  const auto flower = soapfilm::load_cassie_session(test::source_path("data/cassie"), "flower", true);
   CHECK(flower.system == 2);
   CHECK(flower.strokes.size() == 131);
   CHECK(flower.patches.size() == 93);
@@ -167,12 +167,12 @@ TEST_CASE("CASSIE sessions: curves, times, patch log, the flower quirk is a warn
   // leaves the twins without logs.
   s.write("raw_data/x.json", R"({"sketchSystem": 2, "systemStates": [], "allCreatedPatches": [],
       "allSketchedStrokes": [{"id": 0, "appliedPositionConstraints": [{"position": {"x": 0, "y": 0, "z": 0}, "isIntersection": "yes"}]}]})");
-  CHECK_THROWS_WITH(soapfilm::load_cassie_session(s.dir, "x"),
+  CHECK_THROWS_WITH(soapfilm::load_cassie_session(s.dir, "x", true),
                     Catch::Contains("x.json") && Catch::Contains("appliedPositionConstraints[0]") &&
                         Catch::Contains("'isIntersection' must be true or false"));
   s.write("raw_data/x.json", R"({"sketchSystem": 2, "systemStates": [], "allCreatedPatches": [],
       "allSketchedStrokes": [{"id": 0, "appliedPositionConstraints": [{"position": {"x": 0, "y": 0, "z": 0}, "isIntersection": true}]}]})");
-  const auto logged = soapfilm::load_cassie_session(s.dir, "x");
+  const auto logged = soapfilm::load_cassie_session(s.dir, "x", true);
   REQUIRE(logged.logs.count(0) == 1);
   CHECK(logged.logs.at(0).applied_intersection == std::vector<std::optional<bool>>{true});
   REQUIRE(logged.warnings.size() == 1);
