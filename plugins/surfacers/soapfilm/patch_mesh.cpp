@@ -119,6 +119,30 @@ Mesh to_kernel_mesh(const SurfaceMesh& sm, const std::vector<VertexIndex>& borde
   return mesh;
 }
 
+// Whether a boundary point lies inside a boundary edge that does not end
+// at it (within 1e-9 of the perimeter): the polygon runs along itself.
+// Coincident points (a node the cycle passes twice) do not count.
+bool retraces_itself(const std::vector<Vec3>& boundary) {
+  const std::size_t n = boundary.size();
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < n; ++i) perimeter += (boundary[(i + 1) % n] - boundary[i]).norm();
+  const double eps = 1e-9 * perimeter;
+  for (std::size_t e = 0; e < n; ++e) {
+    const Vec3& a = boundary[e];
+    const Vec3 ab = boundary[(e + 1) % n] - a;
+    const double len2 = ab.squaredNorm();
+    if (!(len2 > eps * eps)) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i == e || i == (e + 1) % n) continue;
+      const double t = (boundary[i] - a).dot(ab) / len2;
+      const double reach = eps / std::sqrt(len2);
+      if (t <= reach || t >= 1.0 - reach) continue;
+      if ((a + t * ab - boundary[i]).norm() < eps) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
@@ -128,6 +152,15 @@ Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
     throw std::runtime_error("patch_mesh: target edge length must be finite and > 0");
   for (const Vec3& p : boundary)
     if (!p.allFinite()) throw std::runtime_error("patch_mesh: non-finite boundary point");
+  // A boundary that runs back along itself (a spike: a curve whose control
+  // point lies far beyond its ends, out and back along one line) is filled
+  // with triangles folded over each other, on which the isotropic remeshing
+  // read a removed halfedge (segfault; found by fuzz_cassie_graph). No
+  // surface spans it. Other folded fillings (a cycle passing a node twice,
+  // curves nearly touching) are meshed as before: refusing every
+  // self-intersecting filling cost the bundled replays 34 patches, 14 of
+  // them CASSIE's (README.md).
+  if (retraces_itself(boundary)) throw std::runtime_error("patch_mesh: the boundary runs back along itself");
   PatchMeshTimings local;
   PatchMeshTimings& time = timings ? *timings : local;
   time = PatchMeshTimings{};

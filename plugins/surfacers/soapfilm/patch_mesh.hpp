@@ -40,7 +40,8 @@ struct PatchMeshTimings {
 // border edges" step done on the curves, so border vertices stay on them).
 // Returns a triangle mesh whose border is exactly `boundary` (same points,
 // same order: vertices 0..n-1), with per-vertex normals.
-// Throws std::runtime_error when the polygon cannot be triangulated.
+// Throws std::runtime_error when the polygon cannot be triangulated, or
+// runs back along itself (a point inside another edge: no surface spans it).
 // `timings`, when given, receives the wall time of each stage.
 Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
                 const PatchMeshParams& params, PatchMeshTimings* timings = nullptr);

@@ -1,9 +1,13 @@
 // Patch geometry: manifold disks whose border is the cycle, smoothed.
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 
 #include "boundary_polyline.hpp"
+#include "cassie_graph.hpp"
 #include "mesh_energy.hpp"
 #include "patch_mesh.hpp"
+#include "patch_upkeep.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 #include "soapfilm_surfacer.hpp"
 #include "soapfilm_test_support.hpp"
@@ -103,4 +107,55 @@ TEST_CASE("patch_mesh rejects bad input with a clear error", "[soapfilm]") {
                     Catch::Contains("target edge"));
   CHECK_THROWS_WITH(soapfilm::patch_mesh({Vec3::Zero(), Vec3(NAN, 0, 0), Vec3::UnitY()}, 0.01, p),
                     Catch::Contains("non-finite"));
+}
+
+TEST_CASE("a cycle whose curve runs out and back over itself gets no patch and does not crash", "[soapfilm]") {
+  // Found by fuzz_cassie_graph: a 10 cm square whose first side is a cubic
+  // with a control point 5 m out along the side, so that the curve runs out
+  // 2.2 m and back along itself. The hole filling folds over that spike and
+  // CGAL's isotropic remeshing then read a removed halfedge (segfault in
+  // make_patch, the surfacer's own path).
+  const auto square = [](const std::string& first_side) {
+    return R"({"strokes": [{"id": 0, "segments": [0]}, {"id": 1, "segments": [1]}, {"id": 2, "segments": [2]},
+                          {"id": 3, "segments": [3]}],
+      "segments": [{"id": 0, "stroke_id": 0, "ctrl_pts": [)" + first_side + R"(], "nodes": [0, 1]},
+        {"id": 1, "stroke_id": 1, "ctrl_pts": [[[0.1,0,0],[0.1,0.1,0]]], "nodes": [1, 2]},
+        {"id": 2, "stroke_id": 2, "ctrl_pts": [[[0.1,0.1,0],[0,0.1,0]]], "nodes": [2, 3]},
+        {"id": 3, "stroke_id": 3, "ctrl_pts": [[[0,0.1,0],[0,0,0]]], "nodes": [3, 0]}],
+      "nodes": [{"id": 0, "position": [0,0,0]}, {"id": 1, "position": [0.1,0,0]},
+                {"id": 2, "position": [0.1,0.1,0]}, {"id": 3, "position": [0,0.1,0]}]})";
+  };
+  const soapfilm::SoapfilmParams params;
+  const auto patch_of = [&](const std::string& first_side) {
+    const auto file = std::filesystem::temp_directory_path() / "sketchlab_test_spiked_square.json";
+    std::ofstream(file) << square(first_side);
+    const auto net = soapfilm::load_cassie_network(file);
+    std::filesystem::remove(file);
+    const auto cycles = soapfilm::detect_all_cycles(net.network, params.search);
+    REQUIRE(cycles.size() == 1);
+    const auto poly = soapfilm::boundary_polyline(net.network, cycles[0], params.edge_length, params.max_boundary_points);
+    return std::pair{soapfilm::make_patch(net.network, 1, cycles[0], true, params, nullptr), poly.points};
+  };
+  const auto [spiked, spiked_boundary] = patch_of("[[0,0,0],[0.0333333,0,0],[5.0666667,0,0],[0.1,0,0]]");
+  CHECK_FALSE(spiked.has_value());
+  CHECK_THROWS_WITH(soapfilm::patch_mesh(spiked_boundary, 0.05, params.mesh), Catch::Contains("runs back along itself"));
+  const auto [plain, plain_boundary] = patch_of("[[0,0,0],[0.1,0,0]]");
+  REQUIRE(plain.has_value());
+  CHECK(soapfilm::is_manifold_disk(plain->mesh));
+}
+
+TEST_CASE("patch_mesh refuses a boundary running back along itself but not one passing a point twice", "[soapfilm]") {
+  const soapfilm::PatchMeshParams p;
+  // Out along the x axis to 0.2 and back to 0.1: the point at 0.13 lies
+  // inside the edge from 0.06 to 0.2.
+  const std::vector<Vec3> spike{Vec3(0, 0, 0),     Vec3(0.06, 0, 0), Vec3(0.2, 0, 0), Vec3(0.13, 0, 0),
+                                Vec3(0.1, 0, 0),   Vec3(0.1, 0.1, 0), Vec3(0, 0.1, 0)};
+  CHECK_THROWS_WITH(soapfilm::patch_mesh(spike, 0.02, p), Catch::Contains("runs back along itself"));
+  // A figure of eight through one point twice (a cycle passing a node
+  // twice, which item 24 allows) is meshed as before.
+  const std::vector<Vec3> eight{Vec3(0, 0, 0),    Vec3(0.1, 0.05, 0), Vec3(0.1, -0.05, 0),
+                                Vec3(0, 0, 0),    Vec3(-0.1, 0.05, 0.01), Vec3(-0.1, -0.05, 0.01)};
+  const Mesh m = soapfilm::patch_mesh(eight, 0.02, p);
+  CHECK_FALSE(m.faces.empty());
+  for (const Vec3& v : m.vertices) CHECK(v.allFinite());
 }
