@@ -66,7 +66,8 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
                                                     const std::vector<CurveId>& intersections,
                                                     double max_distance, const SurfaceBrush& brush) {
   if (points.empty()) return std::nullopt;
-  for (const auto& [id, patch] : network.patches()) {
+  for (const auto& entry : network.patches()) {
+    const Patch& patch = entry.second;  // named, not bound: the lambda below captures it (clang 14)
     if (patch.mesh.faces.empty()) continue;
     const Box3 bounds = mesh_box(patch.mesh);
     bool touched = false;
@@ -96,7 +97,7 @@ std::optional<SurfaceProjection> project_on_surface(const Network& network,
     int on_boundary = 0;
     for (CurveId c : intersections) on_boundary += boundary.count(c) > 0;
     whole = whole && on_boundary <= 1;
-    SurfaceProjection proj{id, points, whole};
+    SurfaceProjection proj{entry.first, points, whole};
     for (std::size_t i = 0; i < points.size(); ++i) {
       const bool end = i == 0 || i + 1 == points.size();
       if (near[i] && (whole || end)) proj.control_points[i] = near[i]->point;
