@@ -13,11 +13,7 @@
 using namespace sketchlab;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const std::string_view separator = "\n#raw#\n";
-  const auto cut = text.find(separator);
-  const std::string_view history = text.substr(0, cut);
-  const std::string_view raw = cut == std::string_view::npos ? std::string_view("{}") : text.substr(cut + separator.size());
+  const auto [history, raw] = fuzz::cassie_halves({reinterpret_cast<const char*>(data), size});
   const auto history_file = fuzz::write_file("history.json", history);
   const auto raw_file = fuzz::write_file("raw.json", raw);
   Recording rec;

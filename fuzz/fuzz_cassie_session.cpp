@@ -6,9 +6,6 @@
 // comparison with CASSIE's patch log). Contract (issue 16): only
 // CassieFormatError escapes the loader; a loaded session replays with no
 // exception, crash, undefined behaviour or hang.
-#include <filesystem>
-#include <fstream>
-
 #include "cassie_json.hpp"
 #include "cassie_replay.hpp"
 #include "cassie_session.hpp"
@@ -24,23 +21,14 @@ namespace {
 constexpr std::size_t kMaxReplayedStrokes = 40;
 constexpr std::size_t kMaxReplayedPatches = 40;
 
-void write(const std::filesystem::path& path, std::string_view text) {
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(text.data(), static_cast<std::streamsize>(text.size()));
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::silence_warnings();
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const std::string_view separator = "\n#raw#\n";
-  const auto cut = text.find(separator);
-  const std::string_view history = text.substr(0, cut);
-  const std::string_view raw = cut == std::string_view::npos ? std::string_view("{}") : text.substr(cut + separator.size());
-  const auto dir = fuzz::write_file("session.marker", "").parent_path() / "session";
-  write(dir / "sketch_history" / "fuzz.json", history);
-  write(dir / "raw_data" / "fuzz.json", raw);
+  const auto [history, raw] = fuzz::cassie_halves({reinterpret_cast<const char*>(data), size});
+  fuzz::write_file("session/sketch_history/fuzz.json", history);
+  fuzz::write_file("session/raw_data/fuzz.json", raw);
+  const auto dir = fuzz::scratch_dir() / "session";
   CassieSession session;
   try {
     session = load_cassie_session(dir, "fuzz", true);

@@ -13,6 +13,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "sketchlab/io/warning.hpp"
 
@@ -34,17 +35,32 @@ inline void silence_warnings() {
   (void)done;
 }
 
-// <tmp>/sketchlab-fuzz-<pid>/<name> holding `text`; the directory is the
-// process's own, so parallel fuzzing jobs do not meet.
-inline std::filesystem::path write_file(const std::string& name, std::string_view text) {
+// <tmp>/sketchlab-fuzz-<pid>: the process's own directory, so parallel
+// fuzzing jobs do not meet.
+inline const std::filesystem::path& scratch_dir() {
   static const std::filesystem::path dir = [] {
     const auto d = std::filesystem::temp_directory_path() / ("sketchlab-fuzz-" + std::to_string(getpid()));
     std::filesystem::create_directories(d);
     return d;
   }();
-  const auto path = dir / name;
+  return dir;
+}
+
+// scratch_dir()/<name> (subdirectories made as needed) holding `text`.
+inline std::filesystem::path write_file(const std::string& name, std::string_view text) {
+  const auto path = scratch_dir() / name;
+  std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary | std::ios::trunc).write(text.data(), static_cast<std::streamsize>(text.size()));
   return path;
+}
+
+// A CASSIE session as one input: the sketch_history JSON, a line "#raw#",
+// then the raw_data JSON ("{}" without that line).
+inline std::pair<std::string_view, std::string_view> cassie_halves(std::string_view text) {
+  const std::string_view separator = "\n#raw#\n";
+  const auto cut = text.find(separator);
+  if (cut == std::string_view::npos) return {text, "{}"};
+  return {text.substr(0, cut), text.substr(cut + separator.size())};
 }
 
 // The fuzzer's bytes read front to back as small numbers; zeros once used up.
