@@ -6,8 +6,6 @@
 // a clear error naming the file and element"): only CassieFormatError escapes
 // the loader; a loaded network is searched and meshed with no crash, no
 // undefined behaviour, no hang, and every mesh vertex is finite.
-#include <cmath>
-
 #include "cassie_graph.hpp"
 #include "fuzz_support.hpp"
 #include "patch_upkeep.hpp"
