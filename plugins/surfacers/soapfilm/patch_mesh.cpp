@@ -1,6 +1,7 @@
 // CGAL is confined to this translation unit (slow to compile).
 #include "patch_mesh.hpp"
 #include "timed_soapfilm.hpp"
+#include "sketchlab/geometry/polyline.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
@@ -122,20 +123,18 @@ Mesh to_kernel_mesh(const SurfaceMesh& sm, const std::vector<VertexIndex>& borde
 // Whether a boundary point lies inside a boundary edge that does not end
 // at it (within 1e-9 of the perimeter): the polygon runs along itself.
 // Coincident points (a node the cycle passes twice) do not count.
-bool retraces_itself(const std::vector<Vec3>& boundary) {
+bool retraces_itself(const std::vector<Vec3>& boundary, double perimeter) {
   const std::size_t n = boundary.size();
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < n; ++i) perimeter += (boundary[(i + 1) % n] - boundary[i]).norm();
   const double eps = 1e-9 * perimeter;
   for (std::size_t e = 0; e < n; ++e) {
     const Vec3& a = boundary[e];
     const Vec3 ab = boundary[(e + 1) % n] - a;
     const double len2 = ab.squaredNorm();
     if (!(len2 > eps * eps)) continue;
+    const double reach = eps / std::sqrt(len2);  // eps as a fraction of the edge
     for (std::size_t i = 0; i < n; ++i) {
       if (i == e || i == (e + 1) % n) continue;
       const double t = (boundary[i] - a).dot(ab) / len2;
-      const double reach = eps / std::sqrt(len2);
       if (t <= reach || t >= 1.0 - reach) continue;
       if ((a + t * ab - boundary[i]).norm() < eps) return true;
     }
@@ -160,7 +159,9 @@ Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
   // curves nearly touching) are meshed as before: refusing every
   // self-intersecting filling cost the bundled replays 34 patches, 14 of
   // them CASSIE's (README.md).
-  if (retraces_itself(boundary)) throw std::runtime_error("patch_mesh: the boundary runs back along itself");
+  const double perimeter = polyline_length(boundary) + (boundary.front() - boundary.back()).norm();
+  if (retraces_itself(boundary, perimeter))
+    throw std::runtime_error("patch_mesh: the boundary runs back along itself");
   PatchMeshTimings local;
   PatchMeshTimings& time = timings ? *timings : local;
   time = PatchMeshTimings{};
@@ -181,10 +182,9 @@ Mesh patch_mesh(const std::vector<Vec3>& boundary, double target_edge,
   {
     // Issue 17: a boundary running back over itself (a cycle of coincident
     // curves) encloses no area; remeshing its degenerate triangles crashed.
-    double area = 0.0, perimeter = 0.0;
+    double area = 0.0;
     auto at = [&](int i) { return boundary[static_cast<std::size_t>(i) % boundary.size()]; };
     for (const auto& t : triangles) area += 0.5 * (at(t.second) - at(t.first)).cross(at(t.third) - at(t.first)).norm();
-    for (std::size_t i = 0; i < boundary.size(); ++i) perimeter += (at(int(i) + 1) - at(int(i))).norm();
     if (!(area > 1e-9 * perimeter * perimeter))
       throw std::runtime_error("patch_mesh: the boundary encloses no area (its curves run over each other)");
   }
