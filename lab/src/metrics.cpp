@@ -56,9 +56,9 @@ struct Touch {
   double ta, tb;
 };
 Touch touch(const Curve& a, const Curve& b) {
-  // 5 mm, but at most 2,000 samples: curves in pixel units (2D strokes fitted
+  // 5 mm, but at most 2,001 points: curves in pixel units (2D strokes fitted
   // without a draw plane) would otherwise take minutes.
-  const auto pa = sample_with_spacing(a, std::max(0.005, arclength(a) / 2000.0));
+  const auto pa = sample_with_spacing(a, 0.005, 2001);
   const ClosestPoint onb = closest_point_to_polyline(b, pa);
   const ClosestPoint ona = closest_point(a, onb.point);
   return {ona.distance, ona.t, onb.t};

@@ -66,3 +66,36 @@ TEST_CASE("experiment runner: pictures from the final sketches, also without ske
     CHECK(sketch_to_json(written) == sketch_to_json(parse_sketch_json(drawn_json[i], "panel")));
   }
 }
+
+TEST_CASE("experiment runner: a glitch sample kilometres away neither fails the case nor floods its exports",
+          "[lab][experiment][reliability]") {
+  // The freehand corrector keeps every raw sample (CASSIE's Freehand system),
+  // so a 10 km glitch makes a curve 35 km long and the 10^6 m line one of
+  // 2,236 km. Before the exports were bounded, the first wrote 630 MB of
+  // curves.ply and sketch.obj and the second failed its case in the curve
+  // export ("needs more than 1e7 samples"), after the replay had succeeded.
+  const fs::path dir = fs::temp_directory_path() / "sketchlab_experiment_runner_glitch_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "exp.yaml")
+      << "experiment: glitch\nrecordings: ["
+      << test::source_path("tests/fixtures/reliability/H1_glitch_sample_10000m.jsonl") << ", "
+      << test::source_path("tests/fixtures/reliability/H1b_huge_range_mix.jsonl") << "]\n"
+      << "stacks: [{corrector: freehand}]\n"
+      << "outputs: {dir: " << (dir / "runs").string() << ", timestamp: false, pictures: false}\n";
+  RunOptions options;
+  options.jobs = 1;
+  options.timings = false;
+  const RunSummary summary = run_experiment(load_experiment(dir / "exp.yaml"), test::build_plugin_host(), options);
+  REQUIRE(summary.cases.size() == 2);
+  for (const CaseResult& c : summary.cases) {
+    INFO(c.dir << ": " << c.error);
+    CHECK(c.ok);
+    CHECK(c.metrics.values.at("curves") >= 3);
+    for (const char* file : {"curves.ply", "sketch.obj", "sketch.json"}) {
+      INFO(file);
+      REQUIRE(fs::exists(c.dir / file));
+      CHECK(fs::file_size(c.dir / file) < 4'000'000);
+    }
+  }
+}

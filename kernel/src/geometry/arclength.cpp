@@ -158,21 +158,37 @@ std::vector<Vec3> sample_by_arclength(const Curve& curve, int n) {
   return out;
 }
 
-std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing) {
+namespace {
+
+// Points that sample `curve` every `spacing` metres, ends included (>= 2;
+// infinite when its length is).
+double points_at_spacing(const Curve& curve, double spacing) {
   require_segments(curve, "sample_with_spacing");
   if (!(spacing > 0.0) || !std::isfinite(spacing)) {
     throw std::invalid_argument("sample_with_spacing: spacing must be finite and > 0, got " +
                                 std::to_string(spacing));
   }
-  const double total = arclength(curve);
-  const double segments = std::ceil(total / spacing);
+  return std::max(2.0, std::ceil(arclength(curve) / spacing) + 1.0);
+}
+
+}  // namespace
+
+std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing) {
+  const double points = points_at_spacing(curve, spacing);
   constexpr double kMaxSamples = 1e7;
-  if (segments + 1.0 > kMaxSamples) {
+  if (!(points <= kMaxSamples)) {
     throw std::invalid_argument("sample_with_spacing: spacing " + std::to_string(spacing) +
-                                " m on a curve of length " + std::to_string(total) +
+                                " m on a curve of length " + std::to_string(arclength(curve)) +
                                 " m needs more than 1e7 samples");
   }
-  return sample_by_arclength(curve, std::max(2, static_cast<int>(segments) + 1));
+  return sample_by_arclength(curve, static_cast<int>(points));
+}
+
+std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing, int max_points) {
+  if (max_points < 2)
+    throw std::invalid_argument("sample_with_spacing: max_points must be >= 2, got " + std::to_string(max_points));
+  const double points = points_at_spacing(curve, spacing);
+  return sample_by_arclength(curve, points <= max_points ? static_cast<int>(points) : max_points);
 }
 
 }  // namespace sketchlab

@@ -72,7 +72,8 @@ std::string xml_escape(const std::string& s) {
 
 std::vector<std::vector<Vec3>> curve_polylines(const Network& network, double spacing) {
   std::vector<std::vector<Vec3>> lines;
-  for (const auto& [id, c] : network.curves()) lines.push_back(sample_with_spacing(c.curve, spacing));
+  for (const auto& [id, c] : network.curves())
+    lines.push_back(sample_with_spacing(c.curve, spacing, kMaxPointsPerExportedCurve));
   return lines;
 }
 

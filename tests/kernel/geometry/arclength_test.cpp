@@ -86,6 +86,25 @@ TEST_CASE("sampling by arclength is uniform", "[geometry][arclength]") {
   REQUIRE_THROWS_AS(arclength(c, 1.0, 0.5), std::invalid_argument);
 }
 
+TEST_CASE("sampling with a spacing and a cap on the points", "[geometry][arclength]") {
+  const Curve metre = make_line(Vec3(0, 0, 0), Vec3(1, 0, 0));
+  // Within the cap: the same points as without one.
+  CHECK(sample_with_spacing(metre, 0.01, 1000) == sample_with_spacing(metre, 0.01));
+  CHECK(sample_with_spacing(metre, 0.01, 101).size() == 101);
+  // Beyond it: evenly spread over the whole curve, ends kept.
+  const auto capped = sample_with_spacing(metre, 0.01, 11);
+  REQUIRE(capped.size() == 11);
+  CHECK(capped.front() == Vec3(0, 0, 0));
+  CHECK(capped.back() == Vec3(1, 0, 0));
+  for (std::size_t i = 1; i < capped.size(); ++i) CHECK((capped[i] - capped[i - 1]).norm() == Approx(0.1));
+  // A curve kilometres long (one glitch sample) no longer throws.
+  const Curve glitch = make_line(Vec3(0, 0, 0), Vec3(2e6, 0, 0));
+  CHECK_THROWS_AS(sample_with_spacing(glitch, 0.005), std::invalid_argument);
+  CHECK(sample_with_spacing(glitch, 0.005, 10001).size() == 10001);
+  CHECK_THROWS_WITH(sample_with_spacing(metre, 0.01, 1), Catch::Contains("max_points must be >= 2"));
+  CHECK_THROWS_AS(sample_with_spacing(metre, 0.0, 10), std::invalid_argument);
+}
+
 TEST_CASE("arclength sampling of a zero-length curve stays finite", "[geometry][arclength]") {
   const Curve dot = make_line(Vec3(1, 1, 1), Vec3(1, 1, 1));
   REQUIRE(arclength(dot) == 0.0);

@@ -19,6 +19,12 @@ std::vector<double> arclength_parameters(const Curve& curve, int n);
 // Points at those parameters.
 std::vector<Vec3> sample_by_arclength(const Curve& curve, int n);
 // Points spaced at most `spacing` metres apart along the curve (>= 2 points).
+// Throws std::invalid_argument when that needs more than 1e7 points.
 std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing);
+// The same, but at most `max_points` (>= 2) points: on a curve longer than
+// spacing·(max_points − 1) they are spread evenly, farther apart. For
+// exports and proximity tests that must stay bounded whatever the input (one
+// tracking-glitch sample kilometres away makes a curve kilometres long).
+std::vector<Vec3> sample_with_spacing(const Curve& curve, double spacing, int max_points);
 
 }  // namespace sketchlab

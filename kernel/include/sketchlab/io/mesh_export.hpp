@@ -1,6 +1,9 @@
 #pragma once
 // Curves and patches in formats MeshLab opens. Curves become polylines
-// sampled every `spacing` metres along their arclength; patches their meshes.
+// sampled every `spacing` metres along their arclength, at most
+// kMaxPointsPerExportedCurve points each (a longer curve, such as one
+// stretched kilometres by a tracking-glitch sample, is sampled more
+// coarsely rather than written as millions of points); patches their meshes.
 #include <string>
 #include <vector>
 
@@ -9,6 +12,9 @@
 #include "sketchlab/network.hpp"
 
 namespace sketchlab {
+
+// 50 m of curve at the default 5 mm spacing.
+inline constexpr int kMaxPointsPerExportedCurve = 10001;
 
 // Wavefront OBJ: `v` vertices, `l` polylines (one per curve, grouped as
 // `o curve_<id>`), `f` faces of patches (`o patch_<id>`).
@@ -22,7 +28,8 @@ std::string polylines_to_ply(const std::vector<std::vector<Vec3>>& polylines);  
 std::string points_to_ply(const std::vector<Vec3>& points);                     // vertices only
 std::string meshes_to_ply(const std::vector<const Mesh*>& meshes);              // vertices + faces
 
-// Curves of a network as polylines sampled every `spacing` metres.
+// Curves of a network as polylines sampled every `spacing` metres (at most
+// kMaxPointsPerExportedCurve points each).
 std::vector<std::vector<Vec3>> curve_polylines(const Network& network, double spacing = 0.005);
 
 struct MeshLabLayer {
