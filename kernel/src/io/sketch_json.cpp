@@ -212,7 +212,21 @@ std::string sketch_to_json(const Sketch& sketch, const std::vector<StepReport>* 
   return root.dump(1) + "\n";
 }
 
+namespace {
+
+// A recording's first line is its header (recording/event_json.hpp): given
+// where a sketch is expected, say so rather than report line 2 as bad JSON.
+bool is_recording(std::string_view text) {
+  const json header = json::parse(text.substr(0, text.find('\n')), nullptr, false);
+  return header.is_object() && header.value("format", json()) == "sketchlab-recording";
+}
+
+}  // namespace
+
 Sketch parse_sketch_json(std::string_view text_in, const std::string& name) {
+  if (is_recording(text_in))
+    throw std::runtime_error(name + ": a sketchlab recording (one event per line), not a sketch (format "
+                             "\"sketchlab-sketch\"); replay it first: `sketchlab run` writes each case's sketch.json");
   try {
     const json root = json::parse(text_in);
     if (!root.is_object() || root.value("format", "") != "sketchlab-sketch")

@@ -57,6 +57,19 @@ TEST_CASE("sketch JSON: integers out of range or fractional are errors, never co
   CHECK(error_parsing(R"([1,2])") == R"(s.json: format: expected "sketchlab-sketch")");
 }
 
+TEST_CASE("sketch JSON: a recording given for a sketch is named as one", "[io][sketch_json]") {
+  // It used to fail as malformed JSON at line 2 (the recording's first event).
+  const std::string recording = test::source_path("tests/fixtures/reliability/H1b_huge_range_mix.jsonl");
+  try {
+    (void)read_sketch_json(recording);
+    FAIL("a recording read as a sketch");
+  } catch (const std::runtime_error& e) {
+    CHECK(std::string(e.what()) == recording + ": a sketchlab recording (one event per line), not a sketch (format "
+                                               "\"sketchlab-sketch\"); replay it first: `sketchlab run` writes "
+                                               "each case's sketch.json");
+  }
+}
+
 TEST_CASE("sketch JSON: patch faces must name vertices of their mesh", "[io][sketch_json][reliability]") {
   const std::string head = R"({"format":"sketchlab-sketch","version":1,)" + workspace +
                            R"(,"counters":{"next_curve":1,"next_node":1,"next_patch":2},"curves":[],"nodes":[],)";
