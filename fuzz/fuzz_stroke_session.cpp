@@ -1,7 +1,9 @@
-// libFuzzer harness: hand strokes through the stack a VR user draws with, the
-// cassie corrector and the soap-film surfacer, loaded from this build's
-// plugin directory as the app loads them (issues 15 and 16: real sessions,
-// within a frame, without crashing). The bytes give the workspace (mirror,
+// libFuzzer harness: hand strokes through a stack a VR user draws with,
+// SKETCHLAB_FUZZ_CORRECTOR + SKETCHLAB_FUZZ_SURFACER (fuzz/CMakeLists.txt:
+// cassie + soapfilm in fuzz_stroke_session, scaffoldsketch + hermite_rbf in
+// fuzz_stroke_session_scaffold), loaded from this build's plugin directory
+// as the app loads them (issues 15 and 16: real sessions, within a frame,
+// without crashing). The bytes give the workspace (mirror,
 // grid, zoom) and up to 8 strokes of up to 48 samples at 90 Hz, each a walk
 // of hand steps of at most 2.5 cm from a start in a 1 m box, with the odd
 // glitch sample (from fuzz::Bytes::number: NaN, infinite, 1e300, ...) or
@@ -35,6 +37,15 @@ double unit(fuzz::Bytes& b) {
 
 Vec3 unit_vector(fuzz::Bytes& b) { return {unit(b), unit(b), unit(b)}; }
 
+// The surfacer's defaults, but the Hermite RBF's marching-cubes grid at 16
+// cells instead of 64: its grid evaluation runs about 100 times slower under
+// the fuzzer's coverage counters than in Release (an eight-stroke input: 17 s
+// against 0.14 s), and the coarser grid takes the same code paths.
+std::map<std::string, ParamValue> surfacer_params() {
+  if (std::string_view(SKETCHLAB_FUZZ_SURFACER) == "hermite_rbf") return {{"resolution", std::int64_t{16}}};
+  return {};
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -44,7 +55,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ws.mirror_enabled = b.flag();
   ws.grid_enabled = b.flag();
   ws.scale = 0.5 + b.byte() / 64.0;
-  Session session(ws, host().make_corrector("cassie", {}), host().make_surfacer("soapfilm", {}), {}, 5.0);
+  Session session(ws, host().make_corrector(SKETCHLAB_FUZZ_CORRECTOR, {}),
+                  host().make_surfacer(SKETCHLAB_FUZZ_SURFACER, surfacer_params()), {}, 5.0);
   std::vector<StepReport> steps;
   double t = 0.0;
   const auto handle = [&](Event e) {

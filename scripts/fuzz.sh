@@ -14,7 +14,8 @@ dir="$root/build-fuzz"
 seconds="${FUZZ_SECONDS:-60}"
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(fuzz_recording fuzz_sketch_json fuzz_config fuzz_cassie_import fuzz_openxr_input
-                                    fuzz_cassie_graph fuzz_cassie_session fuzz_stroke_session)
+                                    fuzz_cassie_graph fuzz_cassie_session fuzz_stroke_session
+                                    fuzz_stroke_session_scaffold)
 
 if [ ! -f "$dir/CMakeCache.txt" ]; then
   generator=()
