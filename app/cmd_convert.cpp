@@ -1,6 +1,7 @@
 // `sketchlab convert`: import CASSIE sessions as recordings, export sketches
 // to PLY/OBJ for MeshLab.
 #include <iostream>
+#include <string>
 
 #include "commands.hpp"
 #include "sketchlab/io/mesh_export.hpp"
@@ -63,7 +64,9 @@ void add_convert_command(CLI::App& app, int& exit_code) {
       "export", "Export a sketch (JSON written by `run`) as PLY or OBJ: curves as polylines, patches as faces");
   exp->add_option("sketch", eo->sketch, "sketch.json")->required()->check(CLI::ExistingFile);
   exp->add_option("-o,--output", eo->output, "Output file, .ply or .obj")->required();
-  exp->add_option("--spacing", eo->spacing, "Polyline sample spacing along curves (m)")
+  exp->add_option("--spacing", eo->spacing,
+                  "Polyline sample spacing along curves (m); at most " +
+                      std::to_string(kMaxPointsPerExportedCurve) + " points per curve (spread evenly over a longer one)")
       ->check(CLI::Range(1e-5, 1.0));
   exp->callback([eo, &exit_code] {
     const std::filesystem::path out(eo->output);

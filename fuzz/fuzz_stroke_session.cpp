@@ -8,34 +8,13 @@
 // of hand steps of at most 2.5 cm from a start in a 1 m box, with the odd
 // glitch sample (from fuzz::Bytes::number: NaN, infinite, 1e300, ...) or
 // repeated sample; then maybe a deletion near a stroke, an undo and a manual
-// patch. Contract: Session::handle never throws, and nothing non-finite
-// reaches the sketch or the reports (sketch_to_json writes NaN and infinity
-// as null).
-#include "fuzz_support.hpp"
-#include "sketchlab/io/sketch_json.hpp"
-#include "sketchlab/plugin/plugin_host.hpp"
-#include "sketchlab/session.hpp"
+// patch. Contract: fuzz_session.hpp's CheckedSession.
+#include "fuzz_session.hpp"
 
 using namespace sketchlab;
+using fuzz::unit_vector;
 
 namespace {
-
-const PluginHost& host() {
-  static const PluginHost h = [] {
-    PluginHost loaded;
-    loaded.load_directories({SKETCHLAB_FUZZ_PLUGIN_DIR});
-    return loaded;
-  }();
-  return h;
-}
-
-// An ordinary number in [-1, 1] (two bytes).
-double unit(fuzz::Bytes& b) {
-  const int v = b.byte() | (b.byte() << 8);
-  return v / 32767.5 - 1.0;
-}
-
-Vec3 unit_vector(fuzz::Bytes& b) { return {unit(b), unit(b), unit(b)}; }
 
 // The surfacer's defaults, but the Hermite RBF's marching-cubes grid at 16
 // cells instead of 64: its grid evaluation runs about 100 times slower under
@@ -55,22 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ws.mirror_enabled = b.flag();
   ws.grid_enabled = b.flag();
   ws.scale = 0.5 + b.byte() / 64.0;
-  Session session(ws, host().make_corrector(SKETCHLAB_FUZZ_CORRECTOR, {}),
-                  host().make_surfacer(SKETCHLAB_FUZZ_SURFACER, surfacer_params()), {}, 5.0);
-  std::vector<StepReport> steps;
-  double t = 0.0;
-  const auto handle = [&](Event e) {
-    e.time = t += 1.0;
-    try {
-      steps.push_back(session.handle(e));
-    } catch (const std::exception& x) {
-      fuzz::broken(std::string("Session::handle threw: ") + x.what());
-    } catch (...) {
-      fuzz::broken("Session::handle threw");
-    }
-    if (sketch_to_json(session.sketch(), &steps).find("null") != std::string::npos)
-      fuzz::broken("a non-finite number reached the sketch or a report");
-  };
+  fuzz::CheckedSession session(ws, fuzz::build_plugins().make_corrector(SKETCHLAB_FUZZ_CORRECTOR, {}),
+                               fuzz::build_plugins().make_surfacer(SKETCHLAB_FUZZ_SURFACER, surfacer_params()));
   const int strokes = 1 + b.byte() % 8;
   Vec3 first_start = Vec3::Zero();
   for (int k = 0; k < strokes && !b.empty(); ++k) {
@@ -89,14 +54,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (kind != 254 || i == 0) p += 0.025 * unit_vector(b);
         smp.position = p;
       }
-      smp.time = t + i / 90.0;
+      smp.time = session.last_time() + i / 90.0;
       smp.pressure = 0.7;
       s.samples.push_back(smp);
     }
-    handle(Event{0.0, StrokeEvent{std::move(s)}});
+    session.handle(Event{0.0, StrokeEvent{std::move(s)}});
   }
-  if (b.flag()) handle(Event{0.0, DeleteNearEvent{first_start, 0.05}});
-  if (b.flag()) handle(Event{0.0, UndoEvent{}});
-  if (b.flag()) handle(Event{0.0, AddPatchEvent{first_start + 0.1 * unit_vector(b)}});
+  if (b.flag()) session.handle(Event{0.0, DeleteNearEvent{first_start, 0.05}});
+  if (b.flag()) session.handle(Event{0.0, UndoEvent{}});
+  if (b.flag()) session.handle(Event{0.0, AddPatchEvent{first_start + 0.1 * unit_vector(b)}});
   return 0;
 }

@@ -15,7 +15,7 @@ seconds="${FUZZ_SECONDS:-60}"
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(fuzz_recording fuzz_sketch_json fuzz_config fuzz_cassie_import fuzz_openxr_input
                                     fuzz_cassie_graph fuzz_cassie_session fuzz_stroke_session
-                                    fuzz_stroke_session_scaffold)
+                                    fuzz_stroke_session_scaffold fuzz_tablet_session)
 
 if [ ! -f "$dir/CMakeCache.txt" ]; then
   generator=()
