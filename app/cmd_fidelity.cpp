@@ -18,6 +18,7 @@
 #include "plugin_arguments.hpp"
 #include "reference_patches.hpp"
 #include "sketchlab/io/text_file.hpp"
+#include "sketchlab/io/warning.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
@@ -165,7 +166,11 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     TeacherForcedOptions opt;
     opt.track = o->track;
     opt.snap_tolerance = o->snap_tolerance;
-    if (!o->csv_dir.empty()) fs::create_directories(o->csv_dir);
+    if (!o->csv_dir.empty()) {
+      std::error_code ec;
+      fs::create_directories(o->csv_dir, ec);
+      if (ec) throw std::runtime_error("--csv-dir " + o->csv_dir + ": cannot create the directory: " + ec.message());
+    }
     std::shared_ptr<Surfacer> surfacer;
     if (!o->cassie_logs.empty() && !o->no_patches) surfacer = reference_patch_surfacer(host, "soapfilm");
 
@@ -185,7 +190,13 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       opt.patches = surfacer ? cassie_reference_patches(rec, o->cassie_logs, session) : std::vector<ReferencePatch>{};
       std::map<StrokeId, CassieConstraintLog> logs;
       if (!o->cassie_logs.empty()) {
-        logs = read_cassie_constraint_logs(cassie_raw_data_file(rec, o->cassie_logs, session));
+        const fs::path raw_data = cassie_raw_data_file(rec, o->cassie_logs, session);
+        logs = read_cassie_constraint_logs(raw_data);
+        // Every CASSIE raw_data export logs its strokes; a file without any
+        // is most likely another export's (sketch_graph, sketch_history).
+        if (logs.empty())
+          warn(raw_data.string() + ": no stroke log (allSketchedStrokes) and so no CASSIE patch or constraint "
+               "log for this session; does --cassie-logs name CASSIE's raw_data folder?");
         add_mirrored_twin_logs(rec, logs);
       }
       std::shared_ptr<Corrector> session_corrector = corrector;

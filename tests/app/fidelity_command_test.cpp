@@ -176,6 +176,27 @@ TEST_CASE("sketchlab fidelity --causes accounts for every end whose snap kind di
   CHECK(missing.output.find((dir / "nowhere" / "02-2-2.json").string()) != std::string::npos);
 }
 
+TEST_CASE("sketchlab fidelity warns of a --cassie-logs folder that is not raw_data and names a --csv-dir it cannot "
+          "create",
+          "[app]") {
+  const fs::path dir = test::fresh_dir("fidelity_wrong_folders");
+  const std::string base = std::string(SKETCHLAB_CLI) + " fidelity " +
+                           test::source_path("data/recordings/01-2-1.jsonl") + " --corrector cassie --param mirror=plane";
+  // sketch_graph/01-2-1.json is JSON too: the run used to go on silently
+  // without any log or patch of CASSIE's.
+  const auto graphs = test::run_captured(base + " --cassie-logs " + test::source_path("data/cassie/sketch_graph"));
+  INFO(graphs.output);
+  CHECK(graphs.status == 0);
+  CHECK(graphs.output.find("sketch_graph/01-2-1.json: no stroke log (allSketchedStrokes)") != std::string::npos);
+  CHECK(graphs.output.find("does --cassie-logs name CASSIE's raw_data folder?") != std::string::npos);
+  std::ofstream(dir / "a_file") << "x";
+  const auto blocked = test::run_captured(base + " --csv-dir " + (dir / "a_file" / "csv").string());
+  INFO(blocked.output);
+  CHECK(blocked.status != 0);
+  CHECK(blocked.output.find("--csv-dir " + (dir / "a_file" / "csv").string() + ": cannot create the directory") !=
+        std::string::npos);
+}
+
 TEST_CASE("sketchlab fidelity --cassie-logs compares CASSIE's planar and closed flags with ours", "[app]") {
   const fs::path dir = test::fresh_dir("fidelity_flags");
   const std::string rec = test::source_path("data/recordings/02-2-2.jsonl");  // Patch: planar flags, no closedLoop
