@@ -50,6 +50,8 @@ using namespace sketchlab::soapfilm;
 
 namespace {
 
+constexpr const char* data_dir_layout = "DATA_DIR holds sketch_history/, sketch_graph/, raw_data/: CASSIE's layout";
+
 std::string pct(int num, int den) {
   if (den == 0) return "–";
   char buf[32];
@@ -164,7 +166,7 @@ int main(int argc, char** argv) {
         dir = a;
         dir_given = true;
       } else if (a.find('/') != std::string::npos) {
-        throw std::invalid_argument(a + ": no such directory (DATA_DIR holds sketch_history/, sketch_graph/, raw_data/)");
+        throw std::invalid_argument(a + ": no such directory (" + data_dir_layout + ")");
       } else {
         sessions.push_back(a);
       }
@@ -184,7 +186,8 @@ int main(int argc, char** argv) {
       if (f.path().extension() == ".json") sessions.push_back(f.path().stem().string());
     std::sort(sessions.begin(), sessions.end());
     if (sessions.empty()) {
-      std::cerr << "soapfilm_compare: no session in " << (dir / "sketch_history").string() << "\n";
+      std::cerr << "soapfilm_compare: no session in " << (dir / "sketch_history").string()
+                << " (" << data_dir_layout << ")\n";
       return 2;
     }
   }

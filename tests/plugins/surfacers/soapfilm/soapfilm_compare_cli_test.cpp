@@ -47,6 +47,10 @@ TEST_CASE("soapfilm_compare refuses bad arguments naming them, before any table"
       {data + " hat --param foo=1", "unknown parameter 'foo'; declared: "},
       {data + " no_such_session", "no session 'no_such_session' in " + data + "/sketch_history"},
       {data + "/no_such_dir", data + "/no_such_dir: no such directory"},
+      // A folder of another layout (the recordings) is named with the one expected.
+      {test::source_path("data/recordings"), "no session in " + test::source_path("data/recordings") +
+                                                 "/sketch_history (DATA_DIR holds sketch_history/, sketch_graph/, "
+                                                 "raw_data/: CASSIE's layout)"},
   };
   for (const auto& c : cases) {
     INFO(c.args);
