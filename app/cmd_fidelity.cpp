@@ -195,8 +195,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
         // Every CASSIE raw_data export logs its strokes; a file without any
         // is most likely another export's (sketch_graph, sketch_history).
         if (logs.empty())
-          warn(raw_data.string() + ": no stroke log (allSketchedStrokes) and so no CASSIE patch or constraint "
-               "log for this session; does --cassie-logs name CASSIE's raw_data folder?");
+          warn(raw_data.string() + ": no stroke log (allSketchedStrokes), so the session is compared without "
+               "CASSIE's constraint logs; does --cassie-logs name CASSIE's raw_data folder?");
         add_mirrored_twin_logs(rec, logs);
       }
       std::shared_ptr<Corrector> session_corrector = corrector;
