@@ -24,6 +24,13 @@ double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (a + u * (b - a) - p).norm();
 }
 
+// 0 if p is within `snap` of a, 1 if of b (the nearer if both), else -1.
+int near_end(const Vec3& p, const Vec3& a, const Vec3& b, double snap) {
+  const double da = (p - a).norm(), db = (p - b).norm();
+  if (std::min(da, db) > snap) return -1;
+  return da <= db ? 0 : 1;
+}
+
 }  // namespace
 
 LineResult beautify_line(const Vec3& a0, const Vec3& b0, const std::vector<Candidate>& cands,
@@ -46,14 +53,32 @@ LineResult beautify_line(const Vec3& a0, const Vec3& b0, const std::vector<Candi
   }
   r.used = use;
   Vec3 a = a0, b = b0;
-  // Match to ends by position along the line.
+  // A constraint within `snap` of an end is that end's ("an end snaps if its
+  // constraint is within 2δ"); when both are that near one end, the first
+  // detected takes it and the other end stays where it was drawn (CASSIE's
+  // vintage_car lines 44, 46 and 206 keep that end exactly; matched along
+  // the line, the second one took it and dragged it back across the stroke,
+  // 1.07 m in stroke 44). Otherwise they are matched by position along the
+  // line.
   int ca = -1, cb = -1;
+  auto give = [&](int i, int end) { (end == 0 ? ca : cb) = i; };
   if (use.size() == 2) {
-    const bool first_at_a = along(cands[use[0]].target, a0, b0) <= along(cands[use[1]].target, a0, b0);
-    ca = first_at_a ? use[0] : use[1];
-    cb = first_at_a ? use[1] : use[0];
+    const int e0 = near_end(cands[use[0]].target, a0, b0, snap);
+    const int e1 = near_end(cands[use[1]].target, a0, b0, snap);
+    if (e0 >= 0 && e0 == e1) {
+      give(use[0], e0);
+    } else if (e0 >= 0 || e1 >= 0) {
+      const int end0 = e0 >= 0 ? e0 : 1 - e1;
+      give(use[0], end0);
+      give(use[1], 1 - end0);
+    } else {
+      const bool first_at_a = along(cands[use[0]].target, a0, b0) <= along(cands[use[1]].target, a0, b0);
+      give(use[0], first_at_a ? 0 : 1);
+      give(use[1], first_at_a ? 1 : 0);
+    }
   } else if (use.size() == 1) {
-    (along(cands[use[0]].target, a0, b0) <= 0.5 ? ca : cb) = use[0];
+    const int e = near_end(cands[use[0]].target, a0, b0, snap);
+    give(use[0], e >= 0 ? e : along(cands[use[0]].target, a0, b0) <= 0.5 ? 0 : 1);
   }
   Vec3 pivot = a0;
   bool pivot_set = false;

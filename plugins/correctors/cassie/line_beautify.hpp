@@ -18,7 +18,9 @@ struct LineResult {
 // a, b: the detected line's ends; `constraints` in detection order. With
 // more than two, the first detected and the one farthest from it are used;
 // of two closer than `keep` one is kept (an intersection preferred). Each is
-// matched to the end it is nearer along the line; an end snaps to its
+// matched to the end it is nearer along the line, except that one within
+// `snap` of an end is that end's (of two near the same end, the first
+// detected, and the other end gets none); an end snaps to its
 // constraint when within `snap` of it or when the constraint lies beyond
 // it; otherwise end a is projected onto the line from its constraint to b,
 // then b onto the line from the new a to its constraint. With at most one

@@ -50,6 +50,27 @@ TEST_CASE("Lines: an end snaps to its constraint within 2δ or beyond the end", 
   CHECK(r.enforced.size() == 2);
 }
 
+TEST_CASE("Lines: two constraints within 2δ of one end snap it and leave the other end as drawn",
+          "[cassie][line]") {
+  // vintage_car stroke 44: a 1.1 m line whose two constraints (2 cm apart,
+  // across the stroke) both lie at its start. Matched along the line, the
+  // second would take end b, which would be projected onto the line through
+  // the two: a 3 cm line across the stroke, 1.07 m from where it was drawn.
+  const Vec3 a(0, 0, 0), b(0, 0, 1.1);
+  const std::vector<Candidate> cs{at({0.02, 0.01, -0.01}), at({0.0, 0.03, 0.012})};
+  const LineResult r = beautify_line(a, b, cs, snap, keep, theta, false);
+  CHECK(r.used == std::vector<int>{0, 1});
+  CHECK(r.a == cs[0].target);  // the first detected takes the end
+  CHECK(r.b == b);
+  CHECK(r.enforced == std::vector<int>{0});
+  // Near both ends (a short line): each keeps its own end.
+  const Vec3 c(0.05, 0, 0);
+  const std::vector<Candidate> ds{at({0.052, 0.01, 0}), at({0.001, 0.01, 0})};
+  const LineResult s = beautify_line(a, c, ds, snap, keep, theta, false);
+  CHECK(s.a == ds[1].target);
+  CHECK(s.b == ds[0].target);
+}
+
 TEST_CASE("Lines: interior constraints project a onto the line to b, then b", "[cassie][line]") {
   const Vec3 a(0, 0, 0), b(1, 0, 0);
   const Vec3 p(0.3, 0.02, 0), q(0.7, 0.03, 0.01);
