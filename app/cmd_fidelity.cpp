@@ -18,7 +18,6 @@
 #include "plugin_arguments.hpp"
 #include "reference_patches.hpp"
 #include "sketchlab/io/text_file.hpp"
-#include "sketchlab/io/warning.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
@@ -190,13 +189,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       opt.patches = surfacer ? cassie_reference_patches(rec, o->cassie_logs, session) : std::vector<ReferencePatch>{};
       std::map<StrokeId, CassieConstraintLog> logs;
       if (!o->cassie_logs.empty()) {
-        const fs::path raw_data = cassie_raw_data_file(rec, o->cassie_logs, session);
-        logs = read_cassie_constraint_logs(raw_data);
-        // Every CASSIE raw_data export logs its strokes; a file without any
-        // is most likely another export's (sketch_graph, sketch_history).
-        if (logs.empty())
-          warn(raw_data.string() + ": no stroke log (allSketchedStrokes), so the session is compared without "
-               "CASSIE's constraint logs; does --cassie-logs name CASSIE's raw_data folder?");
+        logs = cassie_constraint_logs(rec, o->cassie_logs, session, "CASSIE's constraint logs");
         add_mirrored_twin_logs(rec, logs);
       }
       std::shared_ptr<Corrector> session_corrector = corrector;

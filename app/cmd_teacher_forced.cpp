@@ -67,9 +67,11 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
     opt.snap_tolerance = o->snap_tolerance;
     std::shared_ptr<Surfacer> surfacer;
     if (!o->cassie_logs.empty() && !o->no_patches) surfacer = reference_patch_surfacer(host, "soapfilm");
+    const std::string session = std::filesystem::path(o->recording).stem().string();
     if (surfacer) {
+      cassie_constraint_logs(rec, o->cassie_logs, session, "CASSIE's patches");
       opt.surfacer = surfacer.get();
-      opt.patches = cassie_reference_patches(rec, o->cassie_logs, std::filesystem::path(o->recording).stem().string());
+      opt.patches = cassie_reference_patches(rec, o->cassie_logs, session);
     }
     std::vector<TeacherForcedStroke> strokes;
     std::vector<std::string> warnings;

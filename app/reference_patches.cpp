@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "sketchlab/lab/cassie_import.hpp"
+#include "sketchlab/io/warning.hpp"
 
 namespace sketchlab::cli {
 
@@ -25,6 +25,18 @@ std::vector<ReferencePatch> cassie_reference_patches(const Recording& recording,
                                                      const std::filesystem::path& raw_data_dir,
                                                      const std::string& fallback_session) {
   return reference_patches(read_cassie_patches(cassie_raw_data_file(recording, raw_data_dir, fallback_session)));
+}
+
+std::map<StrokeId, CassieConstraintLog> cassie_constraint_logs(const Recording& recording,
+                                                               const std::filesystem::path& raw_data_dir,
+                                                               const std::string& fallback_session,
+                                                               const std::string& left_out) {
+  const std::filesystem::path file = cassie_raw_data_file(recording, raw_data_dir, fallback_session);
+  auto logs = read_cassie_constraint_logs(file);
+  if (logs.empty())
+    warn(file.string() + ": no stroke log (allSketchedStrokes), so the session is compared without " + left_out +
+         "; does --cassie-logs name CASSIE's raw_data folder?");
+  return logs;
 }
 
 }  // namespace sketchlab::cli

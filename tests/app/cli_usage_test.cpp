@@ -81,6 +81,14 @@ TEST_CASE("teacher-forced --cassie-logs rebuilds CASSIE's patches unless --no-pa
   const auto missing = test::run_captured(base + "/nowhere");
   CHECK(missing.status != 0);
   CHECK_THAT(missing.output, Catch::Contains("nowhere/flower.json"));
+  // A sibling export given by mistake used to print "patches 0" silently.
+  const auto graphs = test::run_captured(cli() + " teacher-forced " + test::source_path("data/recordings/flower.jsonl") +
+                                         " --corrector cassie --param mirror=plane --cassie-logs " +
+                                         test::source_path("data/cassie/sketch_graph"));
+  CHECK(graphs.status == 0);
+  CHECK_THAT(graphs.output, Catch::Contains("sketch_graph/flower.json: no stroke log (allSketchedStrokes), so the "
+                                            "session is compared without CASSIE's patches; does --cassie-logs name "
+                                            "CASSIE's raw_data folder?"));
 }
 
 TEST_CASE("view takes overrides as positional key.path=value, as run and vr do", "[app][cli]") {
