@@ -3,7 +3,11 @@
 //  - teacher-forced over the 18 bundled sessions, by CASSIE system (what
 //    `sketchlab fidelity` measures), and replayed (each stroke on the
 //    corrector's own sketch so far);
-//  - on a synthetic sketch of 2,000 curves.
+//  - on a synthetic sketch of 2,000 curves;
+//  - one stroke across 10–80 parallel curves (hatching: that many
+//    constraints, no cap on their count, item 7);
+//  - the two ways of solving eq. 3.11 side by side (kkt_solve.hpp), by the
+//    number of segments, each with a target at every interior joint.
 // Prints "name value unit" lines. Targets (issue #15): CPU p95 <= 1 ms and
 // max <= 8 ms on the sessions, p95 <= 5 ms at 2,000 curves.
 #include <chrono>
@@ -15,6 +19,7 @@
 #include <random>
 
 #include "cassie_corrector.hpp"
+#include "kkt_solve.hpp"
 #include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
@@ -131,5 +136,63 @@ int main() {
   print("cassie_2000_curves_cpu", cpu);
   print("cassie_2000_curves_wall", ms);
   std::cout << "cassie_2000_curves_strokes_with_candidates " << constrained << " of 200\n";
+
+  for (int n : {10, 20, 40, 80}) {
+    Sketch hatch;
+    for (int i = 0; i < n; ++i) {
+      Stroke line;
+      line.id = static_cast<StrokeId>(i + 1);
+      for (int k = 0; k < 20; ++k) {
+        Sample smp;
+        smp.position = Vec3(-0.2 + 0.4 * k / 19.0, 0.0, 0.025 * i);
+        smp.time = k / 19.0;
+        line.samples.push_back(smp);
+      }
+      hatch.network.apply(freehand_edit(line, hatch, plain.preprocess));
+    }
+    Stroke across;
+    across.id = 1000;
+    const int m = 10 * n;
+    for (int k = 0; k < m; ++k) {
+      const double u = k / (m - 1.0);
+      Sample smp;
+      smp.position = Vec3(0.1 * u * u, 0.002 * std::cos(3.0 * u), -0.01 + (0.025 * (n - 1) + 0.02) * u);
+      smp.time = 20.0 * u;  // slow: not a line (item 2)
+      across.samples.push_back(smp);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_ms();
+    const Correction c = cassie::correct_stroke(across, hatch, plain);
+    const double cpu_ms = thread_cpu_ms() - c0;
+    const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const std::string name = "cassie_hatch_" + std::to_string(n);
+    std::cout << name << "_cpu " << cpu_ms << " ms\n"
+              << name << "_wall " << wall_ms << " ms\n"
+              << name << "_constraints " << c.constraints.size() << "\n"
+              << name << "_subsets " << c.stats.subsets_tried << "\n";
+  }
+
+  for (int k_count : {2, 5, 10, 20, 40, 80}) {
+    cassie::SolveProblem pr;
+    for (int i = 0; i <= 3 * k_count; ++i)
+      pr.input.control_points.push_back(Vec3(0.01 * i, 0.002 * std::sin(i), 0.001 * i * i / k_count));
+    pr.input.sharp.assign(static_cast<std::size_t>(k_count) + 1, false);
+    for (int k = 1; k < k_count; ++k) pr.points.push_back({3 * k, pr.input.control_points[3 * k] + Vec3(0.001, 0.002, 0)});
+    pr.fidelity = {0.04, 0.5};
+    for (const auto& [method, label] : {std::pair{cassie::KktMethod::range_space, "range_space"},
+                                        std::pair{cassie::KktMethod::sparse_lu, "sparse_lu"}}) {
+      pr.method = method;
+      const auto t0 = std::chrono::steady_clock::now();
+      const double c0 = thread_cpu_ms();
+      int reps = 0;
+      bool ok = true;
+      for (; thread_cpu_ms() - c0 < 100; ++reps) ok = cassie::solve_constrained(pr).ok && ok;
+      if (!ok) std::cout << "cassie_kkt_" << k_count << "_segments_" << label << " failed\n";
+      const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const std::string name = "cassie_kkt_" + std::to_string(k_count) + "_segments_" + label;
+      std::cout << name << "_cpu " << 1000 * (thread_cpu_ms() - c0) / reps << " us\n"
+                << name << "_wall " << 1000 * wall / reps << " us\n";
+    }
+  }
   return 0;
 }

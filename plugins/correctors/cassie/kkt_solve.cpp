@@ -3,8 +3,10 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <Eigen/Dense>
+#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace sketchlab::cassie {
 namespace {
@@ -37,6 +39,85 @@ void add_edge_form(std::vector<Eigen::Triplet<double>>& t, int i, const Mat3& q)
 
 double position_scale(const std::vector<Vec3>& p, double min_edge, const FidelityScale& f) {
   return f.position_scale > 0 ? f.position_scale : span_of(p, min_edge);
+}
+
+// Eq. 3.11 by block elimination (range-space method): A is SPD (the
+// position term of eq. 3.2 is positive definite) and banded, so
+// P = A⁻¹(B − CᵀΛ) with (C A⁻¹ Cᵀ) Λ = C A⁻¹ B − d, the Schur complement
+// dense; then one step of iterative refinement on the full KKT residual.
+// The control points, or none when a factorisation fails or the result is
+// not finite.
+std::optional<Eigen::VectorXd> solve_range_space(const Eigen::SparseMatrix<double>& am,
+                                                 const Eigen::SparseMatrix<double>& cm, const Eigen::VectorXd& rhs,
+                                                 const Eigen::VectorXd& dv) {
+  const Eigen::Index n = am.rows(), nc = cm.rows();
+  // A is block tridiagonal (3×3 blocks, control points in curve order): the
+  // natural ordering has no fill, so no reordering is computed.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(am);
+  if (ldlt.info() != Eigen::Success) return std::nullopt;
+  Eigen::MatrixXd y;  // A⁻¹Cᵀ, n x nc
+  Eigen::LDLT<Eigen::MatrixXd> schur;
+  if (nc > 0) {
+    y = ldlt.solve(Eigen::MatrixXd(cm.transpose()));
+    const Eigen::MatrixXd sm = cm * y;
+    schur.compute(sm);
+    if (schur.info() != Eigen::Success) return std::nullopt;
+  }
+  auto solve = [&](const Eigen::VectorXd& r1, const Eigen::VectorXd& r2, Eigen::VectorXd& px,
+                   Eigen::VectorXd& lx) {
+    const Eigen::VectorXd z = ldlt.solve(r1);
+    if (nc == 0) {
+      px = z;
+      lx.resize(0);
+      return;
+    }
+    lx = schur.solve(cm * z - r2);
+    px = z - y * lx;
+  };
+  Eigen::VectorXd x, lambda;
+  solve(rhs, dv, x, lambda);
+  if (!x.allFinite() || !lambda.allFinite()) return std::nullopt;
+  const Eigen::VectorXd r1 =
+      rhs - am * x - (nc ? Eigen::VectorXd(cm.transpose() * lambda) : Eigen::VectorXd::Zero(n));
+  const Eigen::VectorXd r2 = dv - cm * x;
+  Eigen::VectorXd dx, dl;
+  solve(r1, r2, dx, dl);
+  if (dx.allFinite()) x += dx;
+  if (!x.allFinite()) return std::nullopt;
+  return x;
+}
+
+// Eq. 3.11 as one sparse matrix [A Cᵀ; C 0], LU-factorised with a
+// fill-reducing ordering (COLAMD), then one step of iterative refinement.
+// Every row of it couples neighbouring control points, so the work grows
+// about linearly with the segments where the dense Schur complement above
+// grows with the cube of the constraint rows. Returns as above.
+std::optional<Eigen::VectorXd> solve_sparse_lu(const Eigen::SparseMatrix<double>& am,
+                                               const Eigen::SparseMatrix<double>& cm, const Eigen::VectorXd& rhs,
+                                               const Eigen::VectorXd& dv) {
+  const Eigen::Index n = am.rows(), nc = cm.rows();
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(am.nonZeros() + 2 * cm.nonZeros()));
+  for (int k = 0; k < am.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(am, k); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  for (int k = 0; k < cm.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(cm, k); it; ++it) {
+      t.emplace_back(n + it.row(), it.col(), it.value());
+      t.emplace_back(it.col(), n + it.row(), it.value());
+    }
+  Eigen::SparseMatrix<double> km(n + nc, n + nc);
+  km.setFromTriplets(t.begin(), t.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  lu.analyzePattern(km);
+  lu.factorize(km);
+  if (lu.info() != Eigen::Success) return std::nullopt;
+  Eigen::VectorXd b(n + nc);
+  b << rhs, dv;
+  Eigen::VectorXd sol = lu.solve(b);
+  if (!sol.allFinite()) return std::nullopt;
+  const Eigen::VectorXd step = lu.solve(Eigen::VectorXd(b - km * sol));
+  if (step.allFinite()) sol += step;
+  return Eigen::VectorXd(sol.head(n));
 }
 
 }  // namespace
@@ -132,49 +213,19 @@ SolveResult solve_constrained(const SolveProblem& pr) {
       d.push_back(0.0);
     }
 
-  // Eq. 3.11 solved by block elimination (range-space method): A is SPD
-  // (the position term of eq. 3.2 is positive definite) and banded, so
-  // P = A⁻¹(B − CᵀΛ) with (C A⁻¹ Cᵀ) Λ = C A⁻¹ B − d. Same solution as a
-  // factorisation of the whole KKT matrix, a fraction of the cost.
   const int nc = static_cast<int>(d.size());
   Eigen::SparseMatrix<double> am(n, n), cm(nc, n);
   am.setFromTriplets(a.begin(), a.end());
   cm.setFromTriplets(c.begin(), c.end());
-  // A is block tridiagonal (3×3 blocks, control points in curve order): the
-  // natural ordering has no fill, so no reordering is computed.
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(am);
-  if (ldlt.info() != Eigen::Success) return res;
   const Eigen::VectorXd dv = Eigen::Map<const Eigen::VectorXd>(d.data(), nc);
-  Eigen::MatrixXd y;  // A⁻¹Cᵀ, n x nc
-  Eigen::LDLT<Eigen::MatrixXd> schur;
-  if (nc > 0) {
-    y = ldlt.solve(Eigen::MatrixXd(cm.transpose()));
-    const Eigen::MatrixXd sm = cm * y;
-    schur.compute(sm);
-    if (schur.info() != Eigen::Success) return res;
-  }
-  auto solve = [&](const Eigen::VectorXd& r1, const Eigen::VectorXd& r2, Eigen::VectorXd& px,
-                   Eigen::VectorXd& lx) {
-    const Eigen::VectorXd z = ldlt.solve(r1);
-    if (nc == 0) {
-      px = z;
-      lx.resize(0);
-      return;
-    }
-    lx = schur.solve(cm * z - r2);
-    px = z - y * lx;
-  };
-  Eigen::VectorXd x, lambda;
-  solve(rhs, dv, x, lambda);
-  if (!x.allFinite() || !lambda.allFinite()) return res;
-  {  // one step of iterative refinement on the full KKT residual
-    const Eigen::VectorXd r1 = rhs - am * x - (nc ? Eigen::VectorXd(cm.transpose() * lambda) : Eigen::VectorXd::Zero(n));
-    const Eigen::VectorXd r2 = dv - cm * x;
-    Eigen::VectorXd dx, dl;
-    solve(r1, r2, dx, dl);
-    if (dx.allFinite()) x += dx;
-  }
-  if (!x.allFinite()) return res;
+  const KktMethod method =
+      pr.method != KktMethod::automatic ? pr.method
+      : nc >= kSparseLuRows             ? KktMethod::sparse_lu
+                                        : KktMethod::range_space;
+  const std::optional<Eigen::VectorXd> solved =
+      method == KktMethod::sparse_lu ? solve_sparse_lu(am, cm, rhs, dv) : solve_range_space(am, cm, rhs, dv);
+  if (!solved) return res;
+  const Eigen::VectorXd& x = *solved;
 
   res.control_points.resize(m);
   for (int i = 0; i < m; ++i) res.control_points[i] = x.segment<3>(3 * i);

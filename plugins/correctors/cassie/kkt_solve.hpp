@@ -33,6 +33,16 @@ struct FidelityScale {
   double factor = 1.0;
 };
 
+// How eq. 3.11 is solved (the same solution up to rounding): block
+// elimination with a dense Schur complement (range_space; fastest for the
+// usual few constraints), or one sparse LU of the whole KKT matrix
+// (sparse_lu; a stroke across tens of curves: 80 crossings took 600 ms a
+// stroke the first way, 30 ms this way, `bench_cassie` hatch cases).
+// automatic: sparse_lu from kSparseLuRows constraint rows (about ten
+// segments, where the two cost the same).
+enum class KktMethod { automatic, range_space, sparse_lu };
+inline constexpr int kSparseLuRows = 48;
+
 struct SolveProblem {
   Curve input;  // P̄: the (possibly split) fitted curve
   std::vector<PointTarget> points;
@@ -44,6 +54,7 @@ struct SolveProblem {
   // their joints no G1 row (the linearisation needs a direction).
   double min_edge = 1e-6;
   FidelityScale fidelity;
+  KktMethod method = KktMethod::automatic;
 };
 
 struct SolveResult {
@@ -57,10 +68,9 @@ struct SolveResult {
 double fidelity_energy(const std::vector<Vec3>& input, const std::vector<Vec3>& points,
                        double min_edge, const FidelityScale& scale = {});
 
-// Solves eq. 3.11 by block elimination (sparse LDLT of A, dense LDLT of the
-// Schur complement C A⁻¹ Cᵀ) and one step of iterative
-// refinement. ok = false when the KKT matrix is singular or the result is not
-// finite (e.g. incompatible targets that slipped through).
+// Solves eq. 3.11 (`problem.method`) with one step of iterative refinement.
+// ok = false when the KKT matrix is singular or the result is not finite
+// (e.g. incompatible targets that slipped through).
 SolveResult solve_constrained(const SolveProblem& problem);
 
 }  // namespace sketchlab::cassie
