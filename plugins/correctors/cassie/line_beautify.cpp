@@ -85,14 +85,32 @@ LineResult beautify_line(const Vec3& a0, const Vec3& b0, const std::vector<Candi
   if (ca >= 0) {
     const Vec3 p = cands[ca].target;
     const bool snaps = (p - a).norm() <= snap || along(p, a0, b0) < 0.0;
-    a = snaps ? p : project_on_line(a, p, b);
+    if (!snaps && use.size() == 1) {
+      // A lone constraint that snaps neither end moves the line across onto
+      // it, direction kept: CASSIE's lines with one applied constraint away
+      // from the ends (vintage_car 40, 54, 434, 632) move both ends by the
+      // same offset, at right angles to the line. The reference's "A
+      // projected onto the line from the constraint to B" turned them about
+      // B instead (20–36 mm off at the ends).
+      const Vec3 offset = p - project_on_line(p, a0, b0);
+      a += offset;
+      b += offset;
+    } else {
+      a = snaps ? p : project_on_line(a, p, b);
+    }
     pivot = snaps ? a : p;
     pivot_set = true;
   }
   if (cb >= 0) {
     const Vec3 q = cands[cb].target;
     const bool snaps = (q - b).norm() <= snap || along(q, a0, b0) > 1.0;
-    b = snaps ? q : project_on_line(b, a, q);
+    if (!snaps && use.size() == 1) {  // as above
+      const Vec3 offset = q - project_on_line(q, a0, b0);
+      a += offset;
+      b += offset;
+    } else {
+      b = snaps ? q : project_on_line(b, a, q);
+    }
     if (!pivot_set) pivot = snaps ? b : q;
   }
   // Axis snap with at most one constraint.

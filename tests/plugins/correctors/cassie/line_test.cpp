@@ -86,6 +86,24 @@ TEST_CASE("Lines: interior constraints project a onto the line to b, then b", "[
   CHECK(r.enforced == std::vector<int>{1});
 }
 
+TEST_CASE("Lines: one constraint away from both ends moves the line across onto it", "[cassie][line]") {
+  // CASSIE's vintage_car lines 40, 54, 434 and 632: both ends move by the
+  // same offset, the direction is kept (the reference's rule turned the line
+  // about b instead).
+  const Vec3 a(0, 0, 0), b(1, 0.2, 0);
+  const Vec3 p(0.6, 0.15, 0.02);  // 3.1 cm off the line, 0.44 m from b
+  const LineResult r = beautify_line(a, b, {at(p)}, snap, keep, theta, false);
+  const Vec3 offset = r.a - a;
+  CHECK((r.b - b - offset).norm() < 1e-12);
+  CHECK(offset.dot(b - a) == Approx(0.0).margin(1e-12));
+  CHECK(off_line(r, p) < 1e-12);
+  CHECK(r.enforced == std::vector<int>{0});
+  // Matched to b (nearer along the line) it moves the same way.
+  const LineResult s = beautify_line(b, a, {at(p)}, snap, keep, theta, false);
+  CHECK((s.a - r.b).norm() < 1e-12);
+  CHECK((s.b - r.a).norm() < 1e-12);
+}
+
 TEST_CASE("Lines: of two constraints closer than 0.2δ one is kept, an intersection first",
           "[cassie][line]") {
   const Vec3 a(0, 0, 0), b(1, 0, 0);

@@ -77,7 +77,7 @@ TEST_CASE("Teacher-forced fidelity to CASSIE on the 14 structured sessions", "[c
   CHECK(study.compared == 600);
   CHECK(showcase.compared == 1944);
   // Measured (README): Armature+Patch 85.9 % / 82.3 % / 5.92 mm / 6.68 mm /
-  // 99.7 %; showcase 93.0 % / 89.7 % / 2.77 mm / 4.29 mm / 93.3 %.
+  // 99.7 %; showcase 93.0 % / 89.7 % / 2.74 mm / 4.23 mm / 93.3 %.
   CHECK(study.snap_agreement() > 0.850);
   CHECK(study.snap_kind_agreement() > 0.815);
   CHECK(study.endpoint_distance.median < 0.0062);
