@@ -80,38 +80,39 @@ LineResult beautify_line(const Vec3& a0, const Vec3& b0, const std::vector<Candi
     const int e = near_end(cands[use[0]].target, a0, b0, snap);
     give(use[0], e >= 0 ? e : along(cands[use[0]].target, a0, b0) <= 0.5 ? 0 : 1);
   }
+  // An end snaps to its constraint within `snap` or when it lies beyond it.
+  auto snaps_end = [&](const Vec3& p, int end) {
+    return end == 0 ? (p - a0).norm() <= snap || along(p, a0, b0) < 0.0
+                    : (p - b0).norm() <= snap || along(p, a0, b0) > 1.0;
+  };
   Vec3 pivot = a0;
-  bool pivot_set = false;
-  if (ca >= 0) {
-    const Vec3 p = cands[ca].target;
-    const bool snaps = (p - a).norm() <= snap || along(p, a0, b0) < 0.0;
-    if (!snaps && use.size() == 1) {
-      // A lone constraint that snaps neither end moves the line across onto
-      // it, direction kept: CASSIE's lines with one applied constraint away
-      // from the ends (vintage_car 40, 54, 434, 632) move both ends by the
-      // same offset, at right angles to the line. The reference's "A
-      // projected onto the line from the constraint to B" turned them about
-      // B instead (20–36 mm off at the ends).
-      const Vec3 offset = p - project_on_line(p, a0, b0);
-      a += offset;
-      b += offset;
-    } else {
+  if (use.size() == 1 && !snaps_end(cands[use[0]].target, ca >= 0 ? 0 : 1)) {
+    // A lone constraint that snaps neither end moves the line across onto
+    // it, direction kept: CASSIE's lines with one applied constraint away
+    // from the ends (vintage_car 40, 54, 434, 632) move both ends by the
+    // same offset, at right angles to the line. The reference's "A
+    // projected onto the line from the constraint to B" turned them about B
+    // instead (20–36 mm off at the ends).
+    const Vec3 p = cands[use[0]].target;
+    const Vec3 offset = p - project_on_line(p, a0, b0);
+    a += offset;
+    b += offset;
+    pivot = p;
+  } else {
+    bool pivot_set = false;
+    if (ca >= 0) {
+      const Vec3 p = cands[ca].target;
+      const bool snaps = snaps_end(p, 0);
       a = snaps ? p : project_on_line(a, p, b);
+      pivot = snaps ? a : p;
+      pivot_set = true;
     }
-    pivot = snaps ? a : p;
-    pivot_set = true;
-  }
-  if (cb >= 0) {
-    const Vec3 q = cands[cb].target;
-    const bool snaps = (q - b).norm() <= snap || along(q, a0, b0) > 1.0;
-    if (!snaps && use.size() == 1) {  // as above
-      const Vec3 offset = q - project_on_line(q, a0, b0);
-      a += offset;
-      b += offset;
-    } else {
+    if (cb >= 0) {
+      const Vec3 q = cands[cb].target;
+      const bool snaps = snaps_end(q, 1);
       b = snaps ? q : project_on_line(b, a, q);
+      if (!pivot_set) pivot = snaps ? b : q;
     }
-    if (!pivot_set) pivot = snaps ? b : q;
   }
   // Axis snap with at most one constraint.
   const double len = (b - a).norm();
