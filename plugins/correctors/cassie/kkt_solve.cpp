@@ -47,10 +47,13 @@ double position_scale(const std::vector<Vec3>& p, double min_edge, const Fidelit
 // dense; then one step of iterative refinement on the full KKT residual.
 // The control points, or none when a factorisation fails or the result is
 // not finite.
-std::optional<Eigen::VectorXd> solve_range_space(const Eigen::SparseMatrix<double>& am,
-                                                 const Eigen::SparseMatrix<double>& cm, const Eigen::VectorXd& rhs,
-                                                 const Eigen::VectorXd& dv) {
-  const Eigen::Index n = am.rows(), nc = cm.rows();
+std::optional<Eigen::VectorXd> solve_range_space(const std::vector<Eigen::Triplet<double>>& a,
+                                                 const std::vector<Eigen::Triplet<double>>& c,
+                                                 const Eigen::VectorXd& rhs, const Eigen::VectorXd& dv) {
+  const Eigen::Index n = rhs.size(), nc = dv.size();
+  Eigen::SparseMatrix<double> am(n, n), cm(nc, n);
+  am.setFromTriplets(a.begin(), a.end());
+  cm.setFromTriplets(c.begin(), c.end());
   // A is block tridiagonal (3×3 blocks, control points in curve order): the
   // natural ordering has no fill, so no reordering is computed.
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(am);
@@ -92,19 +95,16 @@ std::optional<Eigen::VectorXd> solve_range_space(const Eigen::SparseMatrix<doubl
 // Every row of it couples neighbouring control points, so the work grows
 // about linearly with the segments where the dense Schur complement above
 // grows with the cube of the constraint rows. Returns as above.
-std::optional<Eigen::VectorXd> solve_sparse_lu(const Eigen::SparseMatrix<double>& am,
-                                               const Eigen::SparseMatrix<double>& cm, const Eigen::VectorXd& rhs,
-                                               const Eigen::VectorXd& dv) {
-  const Eigen::Index n = am.rows(), nc = cm.rows();
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(am.nonZeros() + 2 * cm.nonZeros()));
-  for (int k = 0; k < am.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(am, k); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  for (int k = 0; k < cm.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(cm, k); it; ++it) {
-      t.emplace_back(n + it.row(), it.col(), it.value());
-      t.emplace_back(it.col(), n + it.row(), it.value());
-    }
+std::optional<Eigen::VectorXd> solve_sparse_lu(const std::vector<Eigen::Triplet<double>>& a,
+                                               const std::vector<Eigen::Triplet<double>>& c,
+                                               const Eigen::VectorXd& rhs, const Eigen::VectorXd& dv) {
+  const Eigen::Index n = rhs.size(), nc = dv.size();
+  std::vector<Eigen::Triplet<double>> t = a;
+  t.reserve(a.size() + 2 * c.size());
+  for (const Eigen::Triplet<double>& e : c) {
+    t.emplace_back(n + e.row(), e.col(), e.value());
+    t.emplace_back(e.col(), n + e.row(), e.value());
+  }
   Eigen::SparseMatrix<double> km(n + nc, n + nc);
   km.setFromTriplets(t.begin(), t.end());
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
@@ -214,16 +214,13 @@ SolveResult solve_constrained(const SolveProblem& pr) {
     }
 
   const int nc = static_cast<int>(d.size());
-  Eigen::SparseMatrix<double> am(n, n), cm(nc, n);
-  am.setFromTriplets(a.begin(), a.end());
-  cm.setFromTriplets(c.begin(), c.end());
   const Eigen::VectorXd dv = Eigen::Map<const Eigen::VectorXd>(d.data(), nc);
   const KktMethod method =
       pr.method != KktMethod::automatic ? pr.method
       : nc >= kSparseLuRows             ? KktMethod::sparse_lu
                                         : KktMethod::range_space;
   const std::optional<Eigen::VectorXd> solved =
-      method == KktMethod::sparse_lu ? solve_sparse_lu(am, cm, rhs, dv) : solve_range_space(am, cm, rhs, dv);
+      method == KktMethod::sparse_lu ? solve_sparse_lu(a, c, rhs, dv) : solve_range_space(a, c, rhs, dv);
   if (!solved) return res;
   const Eigen::VectorXd& x = *solved;
 

@@ -61,8 +61,7 @@ TEST_CASE("Teacher-forced fidelity to CASSIE on the 14 structured sessions", "[c
       if (const auto* se = std::get_if<StrokeEvent>(&ev.payload)) drawn[se->stroke.id] = &se->stroke;
     for (const TeacherForcedStroke& t : strokes) {
       if (!t.corrected || !drawn.count(t.stroke)) continue;
-      std::vector<Vec3> pts;
-      for (const Sample& x : drawn[t.stroke]->samples) pts.push_back(x.position);
+      const std::vector<Vec3> pts = positions(*drawn[t.stroke]);
       const double delta = 0.02 / drawn[t.stroke]->workspace_scale;
       INFO("stroke " << t.stroke);
       CHECK(hausdorff_distance(t.output_curve, pts).max() <= 2 * delta + 0.1 * polyline_length(pts));
