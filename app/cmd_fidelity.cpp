@@ -4,6 +4,7 @@
 // sessions at once, summarised per CASSIE system (Freehand / Armature /
 // Patch / showcase), for the study sessions together and for all.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -90,6 +91,35 @@ std::string row(const std::string& name, std::size_t sessions, const TeacherForc
     << fixed(s.cpu_ms.p95, 3) << ',' << fixed(s.cpu_ms.max, 3) << ',' << fixed(s.latency_ms.median, 3)
     << ',' << fixed(s.latency_ms.p95, 3) << ',' << fixed(s.latency_ms.max, 3) << ',' << agreement(d.planar) << ','
     << agreement(d.closed);
+  return o.str();
+}
+
+// The stroke whose curve lies farthest from its samples (two-sided), for
+// the curve-to-stroke table: a reference curve far off is a quirk of the
+// reference (its deviation figures measure that), ours a bug.
+struct Farthest {
+  double distance = -1.0;  // m
+  std::string at;          // "<session> stroke <id>"
+  void add(const std::vector<TeacherForcedStroke>& strokes, const std::string& session, bool reference) {
+    for (const TeacherForcedStroke& t : strokes) {
+      const double d = reference ? t.reference_stroke_distance : t.output_stroke_distance;
+      if (t.compared && d > distance) distance = d, at = session + " stroke " + std::to_string(t.stroke);
+    }
+  }
+};
+
+const char* const stroke_distance_header =
+    "group,ours_median_mm,ours_p90_mm,ours_max_mm,ours_max_at,reference_median_mm,reference_p90_mm,"
+    "reference_max_mm,reference_max_at";
+
+std::string stroke_distance_row(const std::string& name, const TeacherForcedSummary& s,
+                                const std::array<Farthest, 2>& far) {
+  std::ostringstream o;
+  o << name << ',' << fixed(1000 * s.output_stroke_distance.median, 2) << ','
+    << fixed(1000 * s.output_stroke_distance.p90, 2) << ',' << fixed(1000 * s.output_stroke_distance.max, 2)
+    << ',' << far[0].at << ',' << fixed(1000 * s.reference_stroke_distance.median, 2) << ','
+    << fixed(1000 * s.reference_stroke_distance.p90, 2) << ','
+    << fixed(1000 * s.reference_stroke_distance.max, 2) << ',' << far[1].at;
   return o.str();
 }
 
@@ -181,6 +211,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, std::size_t> cause_ends;
     std::map<std::string, std::map<std::string, EndDistances>> end_distances;
     std::map<std::string, DecisionCounts> decisions;  // by row name
+    std::map<std::string, std::array<Farthest, 2>> farthest;  // by row name: ours, the reference's
     std::size_t unlogged_total = 0;
     for (const fs::path& f : files) {
       const Recording rec = read_recording(f);
@@ -229,6 +260,9 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
         std::cerr << ", " << opt.patches.size() << " CASSIE patches (" << warnings.size() << " left out)";
       std::cerr << "\n";
       for (const std::string& w : warnings) std::cerr << "warning: " << session << ": " << w << "\n";
+      for (const std::string& key : {group, std::string(in_study ? "Armature+Patch" : ""), std::string("all")})
+        if (!key.empty())
+          for (int k = 0; k < 2; ++k) farthest[key][k].add(strokes, session, k == 1);
       auto& g = groups[group];
       g.insert(g.end(), strokes.begin(), strokes.end());
       ++group_sessions[group];
@@ -242,15 +276,19 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       }
     }
     std::vector<std::string> rows{std::string(header_row)};
+    std::vector<std::string> distance_rows{std::string(stroke_distance_header)};
+    const auto add_rows = [&](const std::string& name, std::size_t sessions, const std::vector<TeacherForcedStroke>& s) {
+      const TeacherForcedSummary sum = summarize(s);
+      rows.push_back(row(name, sessions, sum, decisions[name]));
+      distance_rows.push_back(stroke_distance_row(name, sum, farthest[name]));
+    };
     for (const char* name : {"Freehand", "Armature", "Patch", "showcase"})
-      if (groups.count(name)) rows.push_back(row(name, group_sessions[name], summarize(groups[name]), decisions[name]));
+      if (groups.count(name)) add_rows(name, group_sessions[name], groups[name]);
     for (const auto& [name, strokes] : groups)
       if (name != "Freehand" && name != "Armature" && name != "Patch" && name != "showcase")
-        rows.push_back(row(name, group_sessions[name], summarize(strokes), decisions[name]));
-    if (!study.empty())
-      rows.push_back(row("Armature+Patch", group_sessions["Armature"] + group_sessions["Patch"], summarize(study),
-                         decisions["Armature+Patch"]));
-    rows.push_back(row("all", files.size(), summarize(all), decisions["all"]));
+        add_rows(name, group_sessions[name], strokes);
+    if (!study.empty()) add_rows("Armature+Patch", group_sessions["Armature"] + group_sessions["Patch"], study);
+    add_rows("all", files.size(), all);
     std::cout << "corrector " << o->corrector;
     for (const std::string& p : o->params) std::cout << " " << p;
     if (o->cassie_subset)
@@ -261,6 +299,8 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     if (groups.count("Freehand") && o->corrector != "freehand")
       std::cout << "(Freehand: CASSIE's Freehand system only fits its strokes; compare those sessions with "
                    "--corrector freehand)\n";
+    std::cout << "\ncurve to its stroke's samples, two-sided (Hausdorff), and the stroke where it is largest:\n"
+              << aligned(distance_rows);
     for (const auto& [name, counts] : causes)
       std::cout << "\n" << name << ": " << cause_ends[name] << " ends, snap kind differs at:\n"
                 << cause_table(counts, cause_ends[name]);

@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include "sketchlab/geometry/arclength.hpp"
+#include "sketchlab/geometry/hausdorff.hpp"
 #include "sketchlab/network_curve.hpp"
 #include "sketchlab/network_nodes.hpp"
 
@@ -337,6 +338,9 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
           r.reference_line = ref->second.kind == CurveKind::line;
           r.output_line = out_curve->curve.kind == CurveKind::line;
           compare(ref->second, out_curve->curve, opt.resample, r);
+          const std::vector<Vec3> samples = positions(stroke);
+          r.output_stroke_distance = hausdorff_distance(out_curve->curve, samples).max();
+          r.reference_stroke_distance = hausdorff_distance(ref->second, samples).max();
           for (int k = 0; k < 2; ++k) {
             const Vec3 pr = k == 0 ? ref->second.control_points.front() : ref->second.control_points.back();
             r.reference_snap[k] = snap_kind(sketch, pr, opt.snap_tolerance);
@@ -366,7 +370,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
 TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes) {
   TeacherForcedSummary s;
   s.strokes = strokes.size();
-  std::vector<double> ep, mean, mx, lat, cpu;
+  std::vector<double> ep, mean, mx, out_stroke, ref_stroke, lat, cpu;
   for (const auto& r : strokes) {
     if (!r.error.empty()) ++s.errors;
     if (r.corrected) {
@@ -378,6 +382,8 @@ TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes) 
     ep.push_back(r.endpoint_distance);
     mean.push_back(r.mean_deviation);
     mx.push_back(r.max_deviation);
+    out_stroke.push_back(r.output_stroke_distance);
+    ref_stroke.push_back(r.reference_stroke_distance);
     s.line_agreements += r.reference_line == r.output_line;
     for (int k = 0; k < 2; ++k) {
       const bool a = !r.reference_snap[k].empty(), b = !r.output_snap[k].empty();
@@ -392,6 +398,8 @@ TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes) 
   s.endpoint_distance = distribution(ep);
   s.mean_deviation = distribution(mean);
   s.max_deviation = distribution(mx);
+  s.output_stroke_distance = distribution(out_stroke);
+  s.reference_stroke_distance = distribution(ref_stroke);
   s.latency_ms = distribution(lat);
   s.cpu_ms = distribution(cpu);
   return s;
@@ -414,7 +422,8 @@ std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) 
   o.precision(9);
   o << "stroke,time,compared,reference_kind,output_kind,endpoint_distance,mean_deviation,"
        "max_deviation,reference_snap0,reference_snap1,output_snap0,output_snap1,"
-       "constraints_considered,constraints_enforced,subsets_tried,latency_ms,cpu_ms,error\n";
+       "constraints_considered,constraints_enforced,subsets_tried,latency_ms,cpu_ms,output_stroke_distance,"
+       "reference_stroke_distance,error\n";
   for (const auto& r : strokes) {
     std::string err = r.error;
     std::replace(err.begin(), err.end(), ',', ';');
@@ -424,7 +433,8 @@ std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) 
       << r.mean_deviation << ',' << r.max_deviation << ',' << r.reference_snap[0] << ','
       << r.reference_snap[1] << ',' << r.output_snap[0] << ',' << r.output_snap[1] << ','
       << r.constraints_considered << ',' << r.constraints_enforced << ',' << r.stats.subsets_tried
-      << ',' << r.latency_ms << ',' << r.cpu_ms << ',' << err << '\n';
+      << ',' << r.latency_ms << ',' << r.cpu_ms << ',' << r.output_stroke_distance << ','
+      << r.reference_stroke_distance << ',' << err << '\n';
   }
   return o.str();
 }

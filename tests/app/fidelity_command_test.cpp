@@ -317,3 +317,33 @@ TEST_CASE("sketchlab fidelity --cassie-subset enforces CASSIE's own applied cons
   CHECK(other.status != 0);
   CHECK(other.output.find("--cassie-subset needs a corrector with an `oracle` parameter") != std::string::npos);
 }
+
+TEST_CASE("sketchlab fidelity names the stroke whose curve lies farthest from its samples", "[app]") {
+  // 02-2-1 stroke 67: CASSIE applied a mirror-plane constraint 0.41 m from
+  // the stroke (the plane z = 0.75, the samples at z = 1.17-1.20) and
+  // stretched its curve there; ours stays on the samples.
+  const fs::path dir = test::fresh_dir("fidelity_stroke_distance");
+  const auto r = test::run_captured(std::string(SKETCHLAB_CLI) + " fidelity " +
+                                    test::source_path("data/recordings/02-2-1.jsonl") +
+                                    " --corrector cassie --param mirror=plane --csv-dir " + dir.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK(r.output.find("curve to its stroke's samples, two-sided (Hausdorff)") != std::string::npos);
+  CHECK(r.output.find("02-2-1 stroke 67") != std::string::npos);
+  std::istringstream csv(read_text_file(dir / "02-2-1.csv"));
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line.find(",output_stroke_distance,reference_stroke_distance,error") != std::string::npos);
+  bool found = false;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    REQUIRE(c.size() >= 19);
+    if (c[0] != "67") continue;
+    found = true;
+    CHECK(std::stod(c[17]) < 0.01);  // ours: 4.7 mm
+    CHECK(std::stod(c[18]) > 0.4);   // CASSIE's: 414 mm
+  }
+  CHECK(found);
+}

@@ -140,6 +140,7 @@ def test_teacher_forced_matches_the_cli(sl, small):
 def test_teacher_forced_rows_hold_the_curves_compared(sl, small):
     strokes = [r for r in sl.teacher_forced(small, sl.corrector("snap_ends")) if r.compared]
     assert strokes
+    drawn = {s.id: s for s in small.strokes()}
     for r in strokes:
         ref, out = r.reference_curve, r.output_curve
         # The row's end distance is the one between these two curves' ends.
@@ -149,6 +150,13 @@ def test_teacher_forced_rows_hold_the_curves_compared(sl, small):
         assert worst == pytest.approx(r.endpoint_distance, abs=1e-12)
         assert r.constraints_considered == len(r.constraints)
         assert r.constraints_enforced == sum(c.enforced for c in r.constraints)
+        # Two-sided distances to the stroke's samples bound each sample's
+        # distance to the curve (up to the curve's sampling).
+        samples = np.asarray(drawn[r.stroke].points)
+        for curve, bound in ((out, r.output_stroke_distance), (ref, r.reference_stroke_distance)):
+            pts = curve.sample(512)
+            far = max(np.min(np.linalg.norm(pts - p, axis=1)) for p in samples)
+            assert far <= bound + 2e-3 * curve.length()
 
 
 def test_long_calls_release_the_gil(sl, small):

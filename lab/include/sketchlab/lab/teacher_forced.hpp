@@ -74,6 +74,11 @@ struct TeacherForcedStroke {
   double endpoint_distance = 0.0;  // m, worse of the two ends (best orientation)
   double mean_deviation = 0.0;     // m, mean distance of arclength-resampled points
   double max_deviation = 0.0;      // m, max of the same
+  // Two-sided (Hausdorff) distance (m) from each curve to the stroke's raw
+  // samples (geometry/hausdorff.hpp): a curve that leaves its stroke's
+  // neighbourhood, ours or a quirk of the reference's (CASSIE's vintage_car
+  // stroke 436 has a control point 5 m off), shows here.
+  double output_stroke_distance = 0.0, reference_stroke_distance = 0.0;
   // Snap of each end: "" (free), "curve", "node", "grid" or "mirror".
   std::array<std::string, 2> reference_snap, output_snap;
   // For the mismatch breakdown (fidelity --causes). Ends are indexed like the
@@ -116,6 +121,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corr
 struct TeacherForcedSummary {
   std::size_t strokes = 0, compared = 0, errors = 0;
   Distribution endpoint_distance, mean_deviation, max_deviation;
+  Distribution output_stroke_distance, reference_stroke_distance;  // over compared strokes
   Distribution latency_ms, cpu_ms;   // over every corrected stroke (wall, thread CPU)
   std::size_t endpoints = 0;         // 2 per compared stroke
   std::size_t snap_agreements = 0;   // snapped in both or in neither
