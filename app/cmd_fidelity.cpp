@@ -102,8 +102,8 @@ struct Farthest {
   std::string at;          // "<session> stroke <id>"
   void add(const std::vector<TeacherForcedStroke>& strokes, const std::string& session, bool reference) {
     for (const TeacherForcedStroke& t : strokes) {
-      const double d = reference ? t.reference_stroke_distance : t.output_stroke_distance;
-      if (t.compared && d > distance) distance = d, at = session + " stroke " + std::to_string(t.stroke);
+      const std::optional<double>& d = reference ? t.reference_stroke_distance : t.output_stroke_distance;
+      if (d && *d > distance) distance = *d, at = session + " stroke " + std::to_string(t.stroke);
     }
   }
 };
@@ -112,15 +112,17 @@ const char* const stroke_distance_header =
     "group,ours_median_mm,ours_p90_mm,ours_max_mm,ours_max_at,reference_median_mm,reference_p90_mm,"
     "reference_max_mm,reference_max_at";
 
+// Median, p90 and max in mm and where the max is ("–" when nothing was
+// measured: strokes of pixels).
+std::string stroke_distance_cells(const Distribution& d, const Farthest& far) {
+  if (d.count == 0) return "–,–,–,–";
+  return fixed(1000 * d.median, 2) + ',' + fixed(1000 * d.p90, 2) + ',' + fixed(1000 * d.max, 2) + ',' + far.at;
+}
+
 std::string stroke_distance_row(const std::string& name, const TeacherForcedSummary& s,
                                 const std::array<Farthest, 2>& far) {
-  std::ostringstream o;
-  o << name << ',' << fixed(1000 * s.output_stroke_distance.median, 2) << ','
-    << fixed(1000 * s.output_stroke_distance.p90, 2) << ',' << fixed(1000 * s.output_stroke_distance.max, 2)
-    << ',' << far[0].at << ',' << fixed(1000 * s.reference_stroke_distance.median, 2) << ','
-    << fixed(1000 * s.reference_stroke_distance.p90, 2) << ','
-    << fixed(1000 * s.reference_stroke_distance.max, 2) << ',' << far[1].at;
-  return o.str();
+  return name + ',' + stroke_distance_cells(s.output_stroke_distance, far[0]) + ',' +
+         stroke_distance_cells(s.reference_stroke_distance, far[1]);
 }
 
 // The CSV rows as an aligned text table.

@@ -88,8 +88,11 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
     print_distribution("endpoint_distance", s.endpoint_distance, 1000.0, "mm");
     print_distribution("mean_deviation", s.mean_deviation, 1000.0, "mm");
     print_distribution("max_deviation", s.max_deviation, 1000.0, "mm");
-    print_distribution("output_stroke_distance", s.output_stroke_distance, 1000.0, "mm");
-    print_distribution("reference_stroke_distance", s.reference_stroke_distance, 1000.0, "mm");
+    // Curve to the stroke's samples, both ways: not measured on strokes of pixels.
+    if (s.output_stroke_distance.count) {
+      print_distribution("output_stroke_distance", s.output_stroke_distance, 1000.0, "mm");
+      print_distribution("reference_stroke_distance", s.reference_stroke_distance, 1000.0, "mm");
+    }
     std::cout << "snap_agreement " << 100.0 * s.snap_agreement() << " %\n"
               << "snap_kind_agreement " << 100.0 * s.snap_kind_agreement() << " %\n"
               << "reference_snaps " << s.reference_snaps << " of " << s.endpoints << " endpoints\n"

@@ -338,9 +338,11 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& rec, Corrector&
           r.reference_line = ref->second.kind == CurveKind::line;
           r.output_line = out_curve->curve.kind == CurveKind::line;
           compare(ref->second, out_curve->curve, opt.resample, r);
-          const std::vector<Vec3> samples = positions(stroke);
-          r.output_stroke_distance = hausdorff_distance(out_curve->curve, samples).max();
-          r.reference_stroke_distance = hausdorff_distance(ref->second, samples).max();
+          if (!stroke.samples_are_pixels) {
+            const std::vector<Vec3> samples = positions(stroke);
+            r.output_stroke_distance = hausdorff_distance(out_curve->curve, samples).max();
+            r.reference_stroke_distance = hausdorff_distance(ref->second, samples).max();
+          }
           for (int k = 0; k < 2; ++k) {
             const Vec3 pr = k == 0 ? ref->second.control_points.front() : ref->second.control_points.back();
             r.reference_snap[k] = snap_kind(sketch, pr, opt.snap_tolerance);
@@ -382,8 +384,8 @@ TeacherForcedSummary summarize(const std::vector<TeacherForcedStroke>& strokes) 
     ep.push_back(r.endpoint_distance);
     mean.push_back(r.mean_deviation);
     mx.push_back(r.max_deviation);
-    out_stroke.push_back(r.output_stroke_distance);
-    ref_stroke.push_back(r.reference_stroke_distance);
+    if (r.output_stroke_distance) out_stroke.push_back(*r.output_stroke_distance);
+    if (r.reference_stroke_distance) ref_stroke.push_back(*r.reference_stroke_distance);
     s.line_agreements += r.reference_line == r.output_line;
     for (int k = 0; k < 2; ++k) {
       const bool a = !r.reference_snap[k].empty(), b = !r.output_snap[k].empty();
@@ -417,6 +419,19 @@ std::string fidelity_group(const RecordingHeader& header) {
   return system;
 }
 
+namespace {
+
+// An empty cell for a value that was not measured.
+std::string optional_cell(const std::optional<double>& v) {
+  if (!v) return "";
+  std::ostringstream o;
+  o.precision(9);
+  o << *v;
+  return o.str();
+}
+
+}  // namespace
+
 std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) {
   std::ostringstream o;
   o.precision(9);
@@ -433,8 +448,8 @@ std::string teacher_forced_csv(const std::vector<TeacherForcedStroke>& strokes) 
       << r.mean_deviation << ',' << r.max_deviation << ',' << r.reference_snap[0] << ','
       << r.reference_snap[1] << ',' << r.output_snap[0] << ',' << r.output_snap[1] << ','
       << r.constraints_considered << ',' << r.constraints_enforced << ',' << r.stats.subsets_tried
-      << ',' << r.latency_ms << ',' << r.cpu_ms << ',' << r.output_stroke_distance << ','
-      << r.reference_stroke_distance << ',' << err << '\n';
+      << ',' << r.latency_ms << ',' << r.cpu_ms << ',' << optional_cell(r.output_stroke_distance) << ','
+      << optional_cell(r.reference_stroke_distance) << ',' << err << '\n';
   }
   return o.str();
 }

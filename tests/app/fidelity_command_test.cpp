@@ -347,3 +347,36 @@ TEST_CASE("sketchlab fidelity names the stroke whose curve lies farthest from it
   }
   CHECK(found);
 }
+
+TEST_CASE("sketchlab fidelity measures no curve-to-stroke distance on strokes of pixels", "[app]") {
+  // Tablet strokes are pixels of a view: a distance from a 3D curve to them
+  // would mix units, so the cells stay empty and the table says "–".
+  const fs::path dir = test::fresh_dir("fidelity_pixels");
+  const fs::path rec = dir / "cube_tablet.jsonl";
+  REQUIRE(test::run_cli("record --input synthetic --param model=cube --param modality=tablet -o " + rec.string(),
+                        dir / "record.txt") == 0);
+  const auto r = test::run_captured(std::string(SKETCHLAB_CLI) + " fidelity " + rec.string() +
+                                    " --corrector analytic --track ground_truth --csv-dir " + (dir / "csv").string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  std::istringstream out(r.output.substr(r.output.find("curve to its stroke's samples")));
+  bool all = false;
+  for (std::string line; std::getline(out, line);)
+    if (line.rfind("all ", 0) == 0) all = line.find("–") != std::string::npos && line.find("stroke") == std::string::npos;
+  CHECK(all);
+  std::istringstream csv(read_text_file(dir / "csv" / "cube_tablet.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    REQUIRE(c.size() >= 17);
+    CHECK(c[16].size() > 0);                      // cpu_ms
+    CHECK((c.size() < 18 || c[17].empty()));      // output_stroke_distance
+    CHECK((c.size() < 19 || c[18].empty()));      // reference_stroke_distance
+  }
+  CHECK(rows > 0);
+}

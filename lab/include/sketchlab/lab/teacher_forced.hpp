@@ -77,8 +77,9 @@ struct TeacherForcedStroke {
   // Two-sided (Hausdorff) distance (m) from each curve to the stroke's raw
   // samples (geometry/hausdorff.hpp): a curve that leaves its stroke's
   // neighbourhood, ours or a quirk of the reference's (CASSIE's vintage_car
-  // stroke 436 has a control point 5 m off), shows here.
-  double output_stroke_distance = 0.0, reference_stroke_distance = 0.0;
+  // stroke 436 has a control point 5 m off), shows here. Set when compared
+  // and the samples are world positions (not for pixels of 2D input).
+  std::optional<double> output_stroke_distance, reference_stroke_distance;
   // Snap of each end: "" (free), "curve", "node", "grid" or "mirror".
   std::array<std::string, 2> reference_snap, output_snap;
   // For the mismatch breakdown (fidelity --causes). Ends are indexed like the
@@ -121,7 +122,7 @@ std::vector<TeacherForcedStroke> teacher_forced(const Recording& recording, Corr
 struct TeacherForcedSummary {
   std::size_t strokes = 0, compared = 0, errors = 0;
   Distribution endpoint_distance, mean_deviation, max_deviation;
-  Distribution output_stroke_distance, reference_stroke_distance;  // over compared strokes
+  Distribution output_stroke_distance, reference_stroke_distance;  // over the strokes that have them
   Distribution latency_ms, cpu_ms;   // over every corrected stroke (wall, thread CPU)
   std::size_t endpoints = 0;         // 2 per compared stroke
   std::size_t snap_agreements = 0;   // snapped in both or in neither
