@@ -112,10 +112,10 @@ const char* const stroke_distance_header =
     "group,ours_median_mm,ours_p90_mm,ours_max_mm,ours_max_at,reference_median_mm,reference_p90_mm,"
     "reference_max_mm,reference_max_at";
 
-// Median, p90 and max in mm and where the max is ("–" when nothing was
-// measured: strokes of pixels).
+// Median, p90 and max in mm and where the max is (empty, as the agreement
+// columns, when nothing was measured: strokes of pixels).
 std::string stroke_distance_cells(const Distribution& d, const Farthest& far) {
-  if (d.count == 0) return "–,–,–,–";
+  if (d.count == 0) return ",,,";
   return fixed(1000 * d.median, 2) + ',' + fixed(1000 * d.p90, 2) + ',' + fixed(1000 * d.max, 2) + ',' + far.at;
 }
 
