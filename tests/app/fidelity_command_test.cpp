@@ -22,6 +22,14 @@ std::size_t lines_of(const fs::path& p) {
   return n;
 }
 
+// The comma-separated cells of a CSV line (trailing empty cells dropped).
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> c;
+  std::stringstream ss(line);
+  for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("sketchlab fidelity prints the table per system and writes a CSV per session", "[app]") {
@@ -84,9 +92,7 @@ std::size_t kind_mismatches(const fs::path& csv) {
   std::getline(in, line);
   std::size_t n = 0;
   while (std::getline(in, line)) {
-    std::vector<std::string> c;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    const std::vector<std::string> c = cells_of(line);
     if (c.size() < 12 || c[2] != "1") continue;
     n += (c[8] != c[10]) + (c[9] != c[11]);  // reference_snap0/1 vs output_snap0/1
   }
@@ -270,9 +276,7 @@ int max_subsets(const fs::path& csv) {
   std::getline(in, line);
   int n = 0;
   while (std::getline(in, line)) {
-    std::vector<std::string> c;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    const std::vector<std::string> c = cells_of(line);
     if (c.size() > 14) n = std::max(n, std::stoi(c[14]));
   }
   return n;
@@ -336,9 +340,7 @@ TEST_CASE("sketchlab fidelity names the stroke whose curve lies farthest from it
   CHECK(line.find(",output_stroke_distance,reference_stroke_distance,error") != std::string::npos);
   bool found = false;
   while (std::getline(csv, line)) {
-    std::vector<std::string> c;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    const std::vector<std::string> c = cells_of(line);
     REQUIRE(c.size() >= 19);
     if (c[0] != "67") continue;
     found = true;
@@ -370,9 +372,7 @@ TEST_CASE("sketchlab fidelity measures no curve-to-stroke distance on strokes of
   std::size_t rows = 0;
   while (std::getline(csv, line)) {
     ++rows;
-    std::vector<std::string> c;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+    const std::vector<std::string> c = cells_of(line);
     REQUIRE(c.size() >= 17);
     CHECK(c[16].size() > 0);                      // cpu_ms
     CHECK((c.size() < 18 || c[17].empty()));      // output_stroke_distance
