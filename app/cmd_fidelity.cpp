@@ -163,8 +163,9 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--param", o->params, "Corrector parameter key=value (repeatable)");
   cmd->add_option("--track", o->track, "Reference track (default cassie)");
   cmd->add_option("--csv-dir", o->csv_dir,
-                  "Write <session>.csv (one row per stroke) and summary.csv (one row per session "
-                  "and per group) into this directory");
+                  "Write <session>.csv (one row per stroke), summary.csv (one row per session "
+                  "and per group) and stroke_distance.csv (the curve-to-stroke table, the same rows) into this "
+                  "directory");
   cmd->add_option("--snap-tolerance", o->snap_tolerance,
                   "Distance (m) under which an endpoint counts as snapped (default 1e-4)");
   cmd->add_flag("--causes", o->causes,
@@ -209,6 +210,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
     std::map<std::string, std::size_t> group_sessions;
     std::vector<TeacherForcedStroke> study, all;
     std::vector<std::string> session_rows{std::string(header_row)};
+    std::vector<std::string> session_distance_rows{std::string(stroke_distance_header)};
     std::map<std::string, std::map<std::string, CauseCount>> causes;
     std::map<std::string, std::size_t> cause_ends;
     std::map<std::string, std::map<std::string, EndDistances>> end_distances;
@@ -255,7 +257,11 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       if (!o->cassie_logs.empty())
         for (const std::string& key : {session, group, std::string(in_study ? "Armature+Patch" : ""), std::string("all")})
           if (!key.empty()) count_decisions(strokes, logs, decisions[key]);
-      session_rows.push_back(row(session + " (" + group + ")", 1, summarize(strokes), decisions[session]));
+      const TeacherForcedSummary summary = summarize(strokes);
+      std::array<Farthest, 2> here;
+      for (int k = 0; k < 2; ++k) here[k].add(strokes, session, k == 1);
+      session_rows.push_back(row(session + " (" + group + ")", 1, summary, decisions[session]));
+      session_distance_rows.push_back(stroke_distance_row(session + " (" + group + ")", summary, here));
       std::cerr << session << ": " << strokes.size() << " strokes";
       if (o->cassie_subset) std::cerr << ", " << unlogged << " without a CASSIE log (searched as usual)";
       if (!opt.patches.empty())
@@ -273,7 +279,7 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       if (o->causes) {
         const std::string cg = in_study ? "Armature+Patch" : group;
         count_causes(strokes, o->cassie_logs.empty() ? nullptr : &logs, o->near, causes[cg]);
-        cause_ends[cg] += summarize(strokes).endpoints;
+        cause_ends[cg] += summary.endpoints;
         add_end_distances(strokes, raw_stroke_ends(rec), end_distances[cg]);
       }
     }
@@ -315,10 +321,16 @@ void add_fidelity_command(CLI::App& app, int& exit_code) {
       std::cout << "\n" << name << ": distance from each of CASSIE's ends to ours, by snap kinds:\n"
                 << end_distance_table(d);
     if (!o->csv_dir.empty()) {
-      std::string csv;
-      for (const auto* list : {&session_rows, &rows})
-        for (std::size_t i = list == &rows ? 1 : 0; i < list->size(); ++i) csv += (*list)[i] + "\n";
-      write_text_file(fs::path(o->csv_dir) / "summary.csv", csv);
+      // The session rows (with the header), then the group rows.
+      const auto write_csv = [&](const char* name, const std::vector<std::string>& sessions,
+                                 const std::vector<std::string>& groups_rows) {
+        std::string csv;
+        for (const std::string& r : sessions) csv += r + "\n";
+        for (std::size_t i = 1; i < groups_rows.size(); ++i) csv += groups_rows[i] + "\n";
+        write_text_file(fs::path(o->csv_dir) / name, csv);
+      };
+      write_csv("summary.csv", session_rows, rows);
+      write_csv("stroke_distance.csv", session_distance_rows, distance_rows);
     }
     exit_code = 0;
   });

@@ -348,6 +348,12 @@ TEST_CASE("sketchlab fidelity names the stroke whose curve lies farthest from it
     CHECK(std::stod(c[18]) > 0.4);   // CASSIE's: 414 mm
   }
   CHECK(found);
+  // The table as CSV, a row per session and per group.
+  const std::string table = read_text_file(dir / "stroke_distance.csv");
+  CHECK(table.rfind("group,ours_median_mm,", 0) == 0);
+  CHECK(table.find("\n02-2-1 (Patch),") != std::string::npos);
+  CHECK(table.find("\nall,") != std::string::npos);
+  CHECK(table.find(",02-2-1 stroke 67\n") != std::string::npos);
 }
 
 TEST_CASE("sketchlab fidelity measures no curve-to-stroke distance on strokes of pixels", "[app]") {
