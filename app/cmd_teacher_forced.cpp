@@ -69,9 +69,11 @@ void add_teacher_forced_command(CLI::App& app, int& exit_code) {
     if (!o->cassie_logs.empty() && !o->no_patches) surfacer = reference_patch_surfacer(host, "soapfilm");
     const std::string session = std::filesystem::path(o->recording).stem().string();
     if (surfacer) {
-      cassie_constraint_logs(rec, o->cassie_logs, session, "CASSIE's patches");
       opt.surfacer = surfacer.get();
       opt.patches = cassie_reference_patches(rec, o->cassie_logs, session);
+      // No patch: a session without any, or another export given by mistake
+      // (the stroke logs tell them apart; read only then).
+      if (opt.patches.empty()) cassie_constraint_logs(rec, o->cassie_logs, session, "CASSIE's patches");
     }
     std::vector<TeacherForcedStroke> strokes;
     std::vector<std::string> warnings;

@@ -108,8 +108,7 @@ std::optional<Eigen::VectorXd> solve_sparse_lu(const std::vector<Eigen::Triplet<
   Eigen::SparseMatrix<double> km(n + nc, n + nc);
   km.setFromTriplets(t.begin(), t.end());
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-  lu.analyzePattern(km);
-  lu.factorize(km);
+  lu.compute(km);
   if (lu.info() != Eigen::Success) return std::nullopt;
   Eigen::VectorXd b(n + nc);
   b << rhs, dv;

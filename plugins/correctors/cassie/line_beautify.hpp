@@ -23,7 +23,9 @@ struct LineResult {
 // detected, and the other end gets none); an end snaps to its
 // constraint when within `snap` of it or when the constraint lies beyond
 // it; otherwise end a is projected onto the line from its constraint to b,
-// then b onto the line from the new a to its constraint. With at most one
+// then b onto the line from the new a to its constraint, except that a lone
+// constraint snapping neither end moves the whole line across onto it,
+// direction kept (CASSIE's own lines; line_beautify.cpp). With at most one
 // constraint and `axis_snap`, a direction within `angle` of an axis (the
 // first such) is rotated onto it, about a (no constraint) or the
 // constrained point, when the other end moves less than `snap`.
