@@ -9,7 +9,11 @@ near the snap), and the cosine between the two displacements. Printed per
 session for CASSIE's curve and for ours (the cassie corrector, mirror=plane)
 on the same strokes.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_one_constraint_motion.py [SESSION...]
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_one_constraint_motion.py \
+        [SESSION...] [NAME=VALUE...]
+
+NAME=VALUE pairs are extra cassie parameters (numbers as numbers), e.g.
+position_scale=8.
 """
 import glob
 import json
@@ -42,14 +46,14 @@ def motion(ends, raw, snapped):
     return nf / max(ns, 1e-6), float(d_snap @ d_free) / max(ns * nf, 1e-12)
 
 
-def main(sessions):
+def main(sessions, params):
     print("session strokes cassie_ratio cassie_cos ours_ratio")
     for session in sessions:
         targets = one_applied(session)
         rec = sl.read_recording(f"data/recordings/{session}.jsonl")
         raw = {e.stroke.id: np.array(e.stroke.points) for e in rec.events if e.type == "stroke"}
         theirs, ours = [], []
-        for r in sl.teacher_forced(rec, sl.corrector("cassie", {"mirror": "plane"})):
+        for r in sl.teacher_forced(rec, sl.corrector("cassie", params)):
             if not r.compared or r.stroke not in targets or len(raw.get(r.stroke, [])) < 3:
                 continue
             ref = np.array(r.reference_curve.sample(2))
@@ -68,5 +72,13 @@ def main(sessions):
 
 
 if __name__ == "__main__":
-    names = sys.argv[1:] or sorted(os.path.basename(p)[:-5] for p in glob.glob("data/cassie/raw_data/*.json"))
-    main(names)
+    params = {"mirror": "plane"}
+    for a in (a for a in sys.argv[1:] if "=" in a):
+        name, value = a.split("=", 1)
+        try:
+            params[name] = float(value)
+        except ValueError:
+            params[name] = value
+    names = [a for a in sys.argv[1:] if "=" not in a] or sorted(
+        os.path.basename(p)[:-5] for p in glob.glob("data/cassie/raw_data/*.json"))
+    main(names, params)

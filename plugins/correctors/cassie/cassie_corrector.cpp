@@ -109,7 +109,7 @@ CorrectedStroke correct_line(Context& cx, const Curve& line) {
 SearchSettings search_settings(const CassieParams& p, const Thresholds& th) {
   SearchSettings st;
   st.lambda = p.lambda;
-  st.fidelity = p.fidelity == FidelityNorm::cassie_app ? FidelityScale{2.0 * th.delta, 0.5} : FidelityScale{};
+  st.fidelity = p.fidelity == FidelityNorm::cassie_app ? FidelityScale{p.position_scale * th.delta, 0.5} : FidelityScale{};
   st.connectivity_over_detected = p.connectivity == ConnectivityTotal::thesis;
   st.tangent_weight = p.tangent_weight;
   st.planarity_weight = p.planarity ? p.planarity_weight : 0.0;

@@ -99,6 +99,9 @@ const ParamTable<Settings>& parameters() {
                                                                     {"thesis", FidelityNorm::thesis}},
                   "E_fidelity normalisation: cassie_app (item 13: positions over (2δ)², halves) or thesis "
                 "(eq. 3.2: positions over the stroke span L²)")
+          .real("position_scale", c(&C::position_scale), 0.01, 1000.0, "δ",
+                "fidelity=cassie_app divides E_fidelity's position term by (this·δ)² (item 13: 2); larger "
+                "lets a constrained curve move more as a whole")
           .choice("connectivity", c(&C::connectivity),
                   std::vector<std::pair<std::string, ConnectivityTotal>>{{"cassie_app", ConnectivityTotal::cassie_app},
                                                                          {"thesis", ConnectivityTotal::thesis}},

@@ -84,6 +84,7 @@ struct CassieParams {
   NodeAlignment node_alignment = NodeAlignment::opposite;
   double lambda = 0.6;                   // fidelity vs connectivity (CHI eq. 2)
   FidelityNorm fidelity = FidelityNorm::cassie_app;
+  double position_scale = 2.0;           // δ: cassie_app's position term over (this·δ)² (item 13: 2)
   ConnectivityTotal connectivity = ConnectivityTotal::cassie_app;
   double tangent_weight = 2.0;           // E_tangent = w/|e₀|²·|T×e|² (item 14: 2)
   double planarity_weight = 1.0;         // E_planar multiplier (item 14: 1)

@@ -95,6 +95,35 @@ TEST_CASE("A candidate that would distort the stroke is rejected", "[cassie]") {
   CHECK(c.stats.subsets_tried == 6);
 }
 
+TEST_CASE("A weaker position term moves a stroke snapped at one end more as a whole", "[cassie]") {
+  // The stroke starts 1.2 cm above a line across it; its other end is free.
+  // Item 13 divides the position term by (2δ)²; a larger position_scale
+  // leaves the edge term to keep the shape, so the free end follows the
+  // snapped one (as CASSIE's newer sessions show: README, "How a stroke with
+  // one applied constraint moves").
+  const Stroke s = make_stroke(7, 60, arc_x(0.12, 0.012));
+  const Curve fitted = correct_stroke(s, Sketch{}, no_soft()).edit.curves_added.at(0).curve;
+  Sketch sketch;
+  add_curve(sketch, make_line({-0.3, -0.3, 0.0}, {-0.3, 0.3, 0.0}));
+  auto free_end_motion = [&](double scale) {
+    CassieParams p = no_soft();
+    p.position_scale = scale;
+    const Correction c = correct_stroke(s, sketch, p);
+    REQUIRE(c.error.empty());
+    const Constraint* k = find_kind(c, ConstraintKind::intersection);
+    REQUIRE(k);
+    REQUIRE(k->enforced);
+    CHECK(k->residual < 1e-9);
+    const Curve& out = c.edit.curves_added.at(0).curve;
+    CHECK(std::abs(out.control_points.front().z()) < 1e-9);
+    return (out.control_points.back() - fitted.control_points.back()).norm();
+  };
+  const double app = free_end_motion(2.0), weak = free_end_motion(8.0);
+  INFO("free end moved " << app << " m at 2δ, " << weak << " m at 8δ");
+  CHECK(weak > 10.0 * app);
+  CHECK(weak < 0.012 + 1e-9);
+}
+
 TEST_CASE("A nearly planar stroke becomes planar and snaps to an axis plane", "[cassie]") {
   Sketch sketch;
   // A half circle in a plane tilted 10° from z = 0, with 3 mm of wobble.
