@@ -10,16 +10,14 @@ session for CASSIE's curve and for ours (the cassie corrector, mirror=plane)
 on the same strokes.
 
     PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_one_constraint_motion.py \
-        [SESSION...] [NAME=VALUE...]
+        [--param NAME=VALUE ...] [SESSION...]
 
-NAME=VALUE pairs are extra cassie parameters (numbers as numbers), e.g.
-position_scale=8.
+--param: corrector parameters for a reading (e.g. position_scale=8).
 """
-import glob
 import json
-import os
 import sys
 
+import example_args
 import numpy as np
 import sketchlab as sl
 
@@ -72,13 +70,5 @@ def main(sessions, params):
 
 
 if __name__ == "__main__":
-    params = {"mirror": "plane"}
-    for a in (a for a in sys.argv[1:] if "=" in a):
-        name, value = a.split("=", 1)
-        try:
-            params[name] = float(value)
-        except ValueError:
-            params[name] = value
-    names = [a for a in sys.argv[1:] if "=" not in a] or sorted(
-        os.path.basename(p)[:-5] for p in glob.glob("data/cassie/raw_data/*.json"))
-    main(names, params)
+    sessions, params = example_args.parse(sys.argv[1:], "logged")
+    main(sessions, {"mirror": "plane", **params})

@@ -17,11 +17,10 @@ makes a plane constraint only where the brush touches the plane.
 NAME=VALUE pairs are extra cassie parameters, e.g. lambda=0.85.
 """
 import collections
-import glob
 import json
-import os
 import sys
 
+import example_args
 import numpy as np
 import sketchlab as sl
 
@@ -91,13 +90,5 @@ def main(sessions, params):
 
 
 if __name__ == "__main__":
-    params = {"mirror": "plane"}
-    for arg in (a for a in sys.argv[1:] if "=" in a):
-        name, value = arg.split("=", 1)
-        try:
-            params[name] = float(value)
-        except ValueError:
-            params[name] = value
-    names = [a for a in sys.argv[1:] if "=" not in a] or sorted(
-        os.path.basename(p)[:-5] for p in glob.glob("data/cassie/raw_data/*.json") if "-0-" not in p)
-    main(names, params)
+    sessions, params = example_args.parse(sys.argv[1:], "logged")
+    main(sessions, {"mirror": "plane", **params})

@@ -24,12 +24,12 @@ out) is paired with the nearest target we enforce within δ/2. Per group
 the offsets then show how near that reading puts the targets.
 """
 import collections
-import glob
 import json
 import os
 import sys
 import tempfile
 
+import example_args
 import numpy as np
 import sketchlab as sl
 
@@ -187,21 +187,7 @@ def report(out):
 
 
 def main(argv):
-    params, sessions = {}, []
-    it = iter(argv)
-    for arg in it:
-        if arg == "--param":
-            key, value = next(it).split("=", 1)
-            params[key] = {"true": True, "false": False}.get(value, value)
-            if isinstance(params[key], str):
-                try:
-                    params[key] = float(value) if "." in value else int(value)
-                except ValueError:
-                    pass
-        else:
-            sessions.append(arg)
-    sessions = sessions or sorted(os.path.basename(p)[:-6] for p in
-                                  glob.glob("data/recordings/0?-[12]-?.jsonl") + glob.glob("data/recordings/[a-z]*.jsonl"))
+    sessions, params = example_args.parse(argv)
     out = collections.defaultdict(list)
     for s in sessions:
         trace_session(s, params, out)
