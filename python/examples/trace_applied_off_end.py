@@ -8,14 +8,15 @@ of our end), on drawn strokes with their own raw_data log (mirrored twins
 left out), then reruns each session with one rule of ours switched off and
 says which one frees our end.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_applied_off_end.py [SESSION...]
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_applied_off_end.py \
+        [--param NAME=VALUE ...] [SESSION...]
 """
 import collections
-import glob
 import json
 import os
 import sys
 
+import example_args
 import numpy as np
 import sketchlab as sl
 
@@ -67,13 +68,13 @@ def traced_ends(rows, logs):
             yield r.stroke, k, np.linalg.norm(cassie_end - target), flags
 
 
-def main(sessions):
+def main(sessions, params):
     counts = collections.Counter()
     for session in sessions:
         rec = sl.read_recording(f"data/recordings/{session}.jsonl")
         logs = read_logs(session)
-        now = sl.teacher_forced(rec, sl.corrector("cassie", BASE))
-        runs = {name: {r.stroke: r for r in sl.teacher_forced(rec, sl.corrector("cassie", {**BASE, **p}))}
+        now = sl.teacher_forced(rec, sl.corrector("cassie", {**BASE, **params}))
+        runs = {name: {r.stroke: r for r in sl.teacher_forced(rec, sl.corrector("cassie", {**BASE, **params, **p}))}
                 for name, p in VARIANTS.items()}
         group = "showcase" if session[0].isalpha() else "study"
         for stroke, k, off, flags in traced_ends(now, logs):
@@ -96,5 +97,4 @@ def main(sessions):
 
 
 if __name__ == "__main__":
-    all_sessions = sorted(os.path.basename(p)[:-6] for p in glob.glob("data/recordings/*.jsonl"))
-    main(sys.argv[1:] or [s for s in all_sessions if "-0-" not in s])
+    main(*example_args.parse(sys.argv[1:]))

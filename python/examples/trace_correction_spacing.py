@@ -21,14 +21,15 @@ It also prints, where ours moved the smallest step (0.1δ), CASSIE's move on
 single-segment old curves (where every parameter reading is arclength up to the
 Bézier's speed) and its correlation with K, L, Lseg and the speed.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_correction_spacing.py [SESSION...]
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_correction_spacing.py \
+        [--param NAME=VALUE ...] [SESSION...]
 """
 import collections
-import glob
 import os
 import sys
 import tempfile
 
+import example_args
 import numpy as np
 import sketchlab as sl
 
@@ -63,15 +64,15 @@ class Grid:
         return self.arclength(a, b) / (b - a)
 
 
-def trace_session(session, out):
+def trace_session(session, params, out):
     group = "showcase" if session[0].isalpha() else "study"
     rec = sl.read_recording(f"data/recordings/{session}.jsonl")
     logs = applied_targets(session)
     with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
         for sid, targets in logs.items():
             f.write(str(sid) + "".join(f" {x!r}" for p in targets for x in p) + "\n")
-    now = run(rec, f.name, {})
-    detected = run(rec, f.name, {"correction_points": 0})
+    now = run(rec, f.name, params)
+    detected = run(rec, f.name, {**params, "correction_points": 0})
     os.unlink(f.name)
     strokes = {e.stroke.id: e.stroke for e in rec.events if e.type == "stroke"}
     curves = {sid: r.reference_curve for sid, r in now.items() if r.compared}
@@ -147,11 +148,10 @@ def report(out):
 
 
 def main(argv):
-    sessions = argv or sorted(os.path.basename(p)[:-6] for p in
-                              glob.glob("data/recordings/0?-[12]-?.jsonl") + glob.glob("data/recordings/[a-z]*.jsonl"))
+    sessions, params = example_args.parse(argv)
     out = collections.defaultdict(list)
     for s in sessions:
-        trace_session(s, out)
+        trace_session(s, params, out)
     report(out)
 
 

@@ -26,18 +26,20 @@ deviation) against the mean distance of each curve to the other as a set
 says where the free ends lie: how far short of the raw stroke's end, along
 it, CASSIE's free end and ours stop.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_geometry_residual.py [--positions] [SESSION...]
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_geometry_residual.py [--positions] \
+        [--param NAME=VALUE ...] [SESSION...]
 
 --positions: also enforce at CASSIE's logged target positions (the
 corrector's oracle_positions), so that only the curve differs.
+--param: corrector parameters for a reading.
 """
 import collections
-import glob
 import json
 import os
 import sys
 import tempfile
 
+import example_args
 import numpy as np
 import sketchlab as sl
 
@@ -106,7 +108,7 @@ def matched(r, applied):
     return all(min((np.linalg.norm(np.array(a) - o) for o in ours), default=np.inf) <= MATCH for a in applied)
 
 
-def main(sessions, positions):
+def main(sessions, positions, params):
     shape = collections.defaultdict(list)
     free_ends = collections.defaultdict(list)
     causes = {"study": collections.Counter(), "showcase": collections.Counter()}
@@ -127,7 +129,7 @@ def main(sessions, positions):
                 f.write(str(sid) + "".join(f" {x!r}" for p in log["applied"] for x in p) + "\n")
             oracle = f.name
         raw = {e.stroke.id: np.array(e.stroke.points) for e in rec.events if e.type == "stroke"}
-        base = {**BASE, "oracle": oracle, "oracle_positions": positions}
+        base = {**BASE, **params, "oracle": oracle, "oracle_positions": positions}
         run = lambda extra: {r.stroke: r for r in sl.teacher_forced(rec, sl.corrector("cassie", {**base, **extra}))}
         now = run({})
         untrimmed = run({"trim_dangling": False})
@@ -211,7 +213,5 @@ def main(sessions, positions):
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a != "--positions"]
-    names = args or sorted(os.path.basename(p)[:-6] for p in
-                                   glob.glob("data/recordings/0?-[12]-?.jsonl") + glob.glob("data/recordings/[a-z]*.jsonl"))
-    main(names, "--positions" in sys.argv[1:])
+    sessions, params = example_args.parse([a for a in sys.argv[1:] if a != "--positions"])
+    main(sessions, "--positions" in sys.argv[1:], params)
