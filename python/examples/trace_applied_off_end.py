@@ -8,7 +8,7 @@ of our end), on drawn strokes with their own raw_data log (mirrored twins
 left out), then reruns each session with one rule of ours switched off and
 says which one frees our end.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_applied_off_end.py \
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_applied_off_end.py \\
         [--param NAME=VALUE ...] [SESSION...]
 """
 import collections

@@ -21,7 +21,7 @@ It also prints, where ours moved the smallest step (0.1δ), CASSIE's move on
 single-segment old curves (where every parameter reading is arclength up to the
 Bézier's speed) and its correlation with K, L, Lseg and the speed.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_correction_spacing.py \
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_correction_spacing.py \\
         [--param NAME=VALUE ...] [SESSION...]
 """
 import collections

@@ -26,7 +26,7 @@ deviation) against the mean distance of each curve to the other as a set
 says where the free ends lie: how far short of the raw stroke's end, along
 it, CASSIE's free end and ours stop.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_geometry_residual.py [--positions] \
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_geometry_residual.py [--positions] \\
         [--param NAME=VALUE ...] [SESSION...]
 
 --positions: also enforce at CASSIE's logged target positions (the

@@ -9,7 +9,7 @@ near the snap), and the cosine between the two displacements. Printed per
 session for CASSIE's curve and for ours (the cassie corrector, mirror=plane)
 on the same strokes.
 
-    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_one_constraint_motion.py \
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_one_constraint_motion.py \\
         [--param NAME=VALUE ...] [SESSION...]
 
 --param: corrector parameters for a reading (e.g. position_scale=8).

@@ -12,9 +12,9 @@ mirror-plane targets logged more than 2.5δ from the stroke's samples: item 18
 makes a plane constraint only where the brush touches the plane.
 
     PYTHONPATH=build/python /usr/bin/python3 python/examples/trace_rejections.py \\
-        [SESSION...] [NAME=VALUE...]
+        [--param NAME=VALUE ...] [SESSION...]
 
-NAME=VALUE pairs are extra cassie parameters, e.g. lambda=0.85.
+--param: corrector parameters for a reading (e.g. lambda=0.85).
 """
 import collections
 import json
