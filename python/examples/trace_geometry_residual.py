@@ -53,8 +53,10 @@ def read_logs(session):
     point = lambda q: [q["x"], q["y"], q["z"]]
     logs = {}
     for s in json.load(open(f"data/cassie/raw_data/{session}.json")).get("allSketchedStrokes", []):
+        # Newer exports log {"position": …, flags}; older ones the bare point.
+        targets = lambda key: [point(q["position"]) if "position" in q else point(q) for q in s.get(key) or []]
         logs[s["id"]] = {
-            "applied": [point(q["position"]) if "position" in q else point(q) for q in s.get("appliedPositionConstraints", [])],
+            "applied": targets("appliedPositionConstraints"), "rejected": targets("rejectedPositionConstraints"),
             "planar": s.get("planar"), "onSurface": s.get("onSurface")}
     return logs
 

@@ -14,25 +14,20 @@ on the same strokes.
 
 --param: corrector parameters for a reading (e.g. position_scale=8).
 """
-import json
 import sys
 
 import example_args
 import numpy as np
 import sketchlab as sl
 
+from trace_geometry_residual import read_logs
+
 AT_END = 1e-4  # m: the applied target is the curve's end
 
 
 def one_applied(session):
     """Stroke id -> the single applied target, for strokes that logged exactly one."""
-    out = {}
-    for s in json.load(open(f"data/cassie/raw_data/{session}.json")).get("allSketchedStrokes", []):
-        applied = s.get("appliedPositionConstraints", [])
-        if len(applied) == 1:
-            q = applied[0].get("position", applied[0])
-            out[s["id"]] = np.array([q["x"], q["y"], q["z"]])
-    return out
+    return {sid: np.array(log["applied"][0]) for sid, log in read_logs(session).items() if len(log["applied"]) == 1}
 
 
 def motion(ends, raw, snapped):

@@ -17,39 +17,25 @@ makes a plane constraint only where the brush touches the plane.
 --param: corrector parameters for a reading (e.g. lambda=0.85).
 """
 import collections
-import json
 import sys
 
 import example_args
 import numpy as np
 import sketchlab as sl
 
-POSITION_KINDS = {"intersection", "mirror_plane", "grid_point", "point_on_curve", "coincident_point"}
-
-
-def position(c):
-    q = c.get("position", c)  # newer exports: {"position": …, flags}; older: the point itself
-    return np.array([q["x"], q["y"], q["z"]])
-
-
-def distance_to_polyline(q, pts):
-    a, b = pts[:-1], pts[1:]
-    ab = b - a
-    t = np.clip(np.einsum("ij,ij->i", q - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-18), 0, 1)
-    return float(np.min(np.linalg.norm(a + t[:, None] * ab - q, axis=1)))
+from trace_geometry_residual import POS, read_logs
+from trace_target_positions import nearest_on_polyline
 
 
 def main(sessions, params):
     places = collections.Counter()
     print("session strokes cassie_rejects cassie_rejects_far ours_rejects far_plane_targets")
     for session in sessions:
-        path = f"data/recordings/{session}.jsonl"
-        with open(path) as f:
-            ws = json.loads(f.readline())["workspace"]
-        normal, offset = np.array(ws["mirror_normal"]), ws.get("mirror_offset", 0.0)
-        rec = sl.read_recording(path)
+        rec = sl.read_recording(f"data/recordings/{session}.jsonl")
+        ws = rec.header.workspace
+        normal, offset = np.array(ws.mirror_normal), ws.mirror_offset
         strokes = {s.id: s for s in rec.strokes()}
-        logs = {s["id"]: s for s in json.load(open(f"data/cassie/raw_data/{session}.json"))["allSketchedStrokes"]}
+        logs = read_logs(session)
         n = theirs = theirs_far = ours = far_plane = 0
         for r in sl.teacher_forced(rec, sl.corrector("cassie", params)):
             log, stroke = logs.get(r.stroke), strokes.get(r.stroke)
@@ -57,18 +43,17 @@ def main(sessions, params):
                 continue
             delta = 0.02 / stroke.workspace_scale
             samples = np.array(stroke.points)
-            applied = [position(c) for c in log.get("appliedPositionConstraints") or []]
-            rejected = [position(c) for c in log.get("rejectedPositionConstraints") or []]
-            mine = [c for c in r.constraints if c.kind.name in POSITION_KINDS]
+            applied, rejected = (np.array(log[key]).reshape(-1, 3) for key in ("applied", "rejected"))
+            mine = [c for c in r.constraints if c.kind.name in POS]
             n += 1
-            theirs += bool(rejected)
+            theirs += len(rejected) > 0
             far = [q for q in rejected if all(np.linalg.norm(q - a) > 0.01 for a in applied)]
             theirs_far += bool(far)
             ours += any(not c.enforced for c in mine)
             ends = np.array(r.reference_curve.control_points)[[0, -1]]
             for q, verdict in [(q, "applied") for q in applied] + [(q, "rejected") for q in far]:
                 if np.linalg.norm(normal) > 0 and abs(q @ normal - offset) < 1e-4 \
-                        and distance_to_polyline(q, samples) > 2.5 * delta:
+                        and nearest_on_polyline(q, samples)[1] > 2.5 * delta:
                     far_plane += 1
                 where = "end" if min(np.linalg.norm(q - e) for e in ends) < delta else "inside"
                 near = [c for c in mine if np.linalg.norm(np.array(c.target) - q) < delta / 2]
