@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "output_dir.hpp"
 #include "scenes.hpp"
 #include "sketchlab/viewer/png_image.hpp"
 #include "sketchlab/viewer/render_png.hpp"
@@ -19,12 +20,6 @@ using viewer::Panel;
 using viewer::RgbImage;
 
 namespace {
-
-std::filesystem::path out_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / "sketchlab_test_viewers";
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 Camera front_camera() {
   Camera cam;
@@ -76,7 +71,7 @@ TEST_CASE("deviation colours: a curve 1 cm from its stroke is viridis' middle on
   ensure_display();
   const Sketch sketch = offset_stroke_sketch(0.01);
   const int w = 400, h = 300;
-  const auto png = out_dir() / "deviation.png";
+  const auto png = viewer_output_dir() / "deviation.png";
   // The curve's middle at the picture's centre; probe a quarter of the way along it.
   const Vec2 q = project(front_camera(), Vec3(-0.2, 0.0, 0.0), 0, w, h);
   viewer::render_png({Panel{"", &sketch, nullptr, ""}}, front_camera(), w, h, png, deviation_style(0.02));
@@ -99,7 +94,7 @@ TEST_CASE("scale bar: a round length, drawn to scale at the focal distance", "[v
   style.multisamples = 0;
   style.show_scale_bar = true;
   const int w = 400, h = 300;
-  const auto png = out_dir() / "scale_bar.png";
+  const auto png = viewer_output_dir() / "scale_bar.png";
   viewer::render_png({Panel{"", &sketch, nullptr, ""}}, front_camera(), w, h, png, style);
   const RgbImage img = viewer::read_png(png);
   // 2 m away with a 30° view: 2 · 2 tan 15° / 300 m per pixel; a fifth of
@@ -121,7 +116,7 @@ TEST_CASE("panels in rows: the third of three panels in two columns is drawn at 
   viewer::SceneStyle style;
   style.multisamples = 0;
   const int w = 400, h = 400;
-  const auto png = out_dir() / "rows.png";
+  const auto png = viewer_output_dir() / "rows.png";
   viewer::render_png({Panel{"", &sketch, nullptr, ""}, Panel{"", &sketch, nullptr, ""}, Panel{"", &sketch, nullptr, ""}},
                      front_camera(), w, h, png, style, 2);
   const RgbImage img = viewer::read_png(png);

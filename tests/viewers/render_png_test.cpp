@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "output_dir.hpp"
 #include "scenes.hpp"
 #include "sketchlab/io/sketch_json.hpp"
 #include "sketchlab/viewer/display.hpp"
@@ -21,12 +22,6 @@ using viewer::Panel;
 using viewer::RgbImage;
 
 namespace {
-
-std::filesystem::path out_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / "sketchlab_test_viewers";
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 // Exact pixels (no multisampling) so that equal scenes give equal pixels.
 viewer::SceneStyle exact_style() {
@@ -52,7 +47,7 @@ TEST_CASE("a straight curve renders dark along its projection and nowhere else",
   const Sketch sketch = line_sketch(a, b);
   const Camera cam = oblique_camera();
   const int w = 480, h = 360;
-  const auto png = out_dir() / "line.png";
+  const auto png = viewer_output_dir() / "line.png";
   viewer::render_png({Panel{"", &sketch, nullptr, ""}}, cam, w, h, png, exact_style());
   const RgbImage img = viewer::read_png(png);
   REQUIRE(img.width == w);
@@ -82,7 +77,7 @@ TEST_CASE("two panels share the camera: the same sketch renders identically in b
   const Sketch sketch = line_sketch({-0.5, -0.2, 0.1}, {0.5, 0.3, -0.2});
   const Camera cam = oblique_camera();
   const int w = 800, h = 300, half = w / 2;
-  const auto png = out_dir() / "two_panels.png";
+  const auto png = viewer_output_dir() / "two_panels.png";
   viewer::render_png({Panel{"same", &sketch, nullptr, "1 curve"},
                       Panel{"same", &sketch, nullptr, "1 curve"}},
                      cam, w, h, png, exact_style());
@@ -117,7 +112,7 @@ TEST_CASE("different sketches in two panels each render with the common camera",
   Camera cam;
   cam.position = {0.0, 0.0, 2.5};
   const int w = 640, h = 320, half = w / 2;
-  const auto png = out_dir() / "two_sketches.png";
+  const auto png = viewer_output_dir() / "two_sketches.png";
   viewer::render_png({Panel{"", &left, nullptr, ""}, Panel{"", &right, nullptr, ""}}, cam, w, h,
                      png, exact_style());
   const RgbImage img = viewer::read_png(png);
@@ -138,8 +133,8 @@ TEST_CASE("a translucent patch tints the pixels inside its projection only", "[v
   REQUIRE(filled.network.patches().size() == 1);
   const Camera cam = oblique_camera();
   const int w = 400, h = 300;
-  const auto png_frame = out_dir() / "square_frame.png";
-  const auto png_filled = out_dir() / "square_patch.png";
+  const auto png_frame = viewer_output_dir() / "square_frame.png";
+  const auto png_filled = viewer_output_dir() / "square_patch.png";
   viewer::render_png({Panel{"", &frame, nullptr, ""}}, cam, w, h, png_frame, exact_style());
   viewer::render_png({Panel{"", &filled, nullptr, ""}}, cam, w, h, png_filled, exact_style());
   const RgbImage a = viewer::read_png(png_frame), b = viewer::read_png(png_filled);
@@ -186,9 +181,9 @@ TEST_CASE("a patch with vertex normals draws the same from sketch.json as from m
 
   const Camera cam = oblique_camera();
   const int w = 200, h = 150;
-  const auto png_memory = out_dir() / "normals_memory.png";
-  const auto png_file = out_dir() / "normals_file.png";
-  const auto png_flat = out_dir() / "normals_flat.png";
+  const auto png_memory = viewer_output_dir() / "normals_memory.png";
+  const auto png_file = viewer_output_dir() / "normals_file.png";
+  const auto png_flat = viewer_output_dir() / "normals_flat.png";
   viewer::render_png({Panel{"", &shaded, nullptr, ""}}, cam, w, h, png_memory, exact_style());
   viewer::render_png({Panel{"", &read_back, nullptr, ""}}, cam, w, h, png_file, exact_style());
   viewer::render_png({Panel{"", &flat, nullptr, ""}}, cam, w, h, png_flat, exact_style());
@@ -203,7 +198,7 @@ TEST_CASE("nodes are drawn as dots in the node colour", "[viewer]") {
   const Sketch sketch = square_sketch(0.4, false);
   const Camera cam = oblique_camera();
   const int w = 400, h = 300;
-  const auto png = out_dir() / "nodes.png";
+  const auto png = viewer_output_dir() / "nodes.png";
   viewer::render_png({Panel{"", &sketch, nullptr, ""}}, cam, w, h, png, exact_style());
   const RgbImage img = viewer::read_png(png);
   for (const auto& [id, node] : sketch.network.nodes()) {
@@ -219,7 +214,7 @@ TEST_CASE("no X display gives a clear error and writes nothing", "[viewer]") {
   const char* old = std::getenv("DISPLAY");
   const std::optional<std::string> saved = old ? std::optional<std::string>(old) : std::nullopt;
   const Sketch sketch = line_sketch({0, 0, 0}, {1, 0, 0});
-  const auto png = out_dir() / "never_written.png";
+  const auto png = viewer_output_dir() / "never_written.png";
   std::filesystem::remove(png);
 
   unsetenv("DISPLAY");
@@ -244,7 +239,7 @@ TEST_CASE("no X display gives a clear error and writes nothing", "[viewer]") {
 
 TEST_CASE("bad arguments are rejected before rendering", "[viewer]") {
   const Sketch sketch = line_sketch({0, 0, 0}, {1, 0, 0});
-  const auto png = out_dir() / "bad.png";
+  const auto png = viewer_output_dir() / "bad.png";
   CHECK_THROWS_WITH(viewer::render_png({}, viewer::Camera{}, 100, 100, png),
                     Catch::Contains("no panels"));
   CHECK_THROWS_WITH(
@@ -256,7 +251,7 @@ TEST_CASE("bad arguments are rejected before rendering", "[viewer]") {
       viewer::render_png({Panel{"", &sketch, nullptr, ""}}, degenerate, 100, 100, png),
       Catch::Contains("camera"));
   CHECK_THROWS_WITH(viewer::render_png({Panel{"", &sketch, nullptr, ""}}, viewer::Camera{}, 100,
-                                       100, out_dir() / "no_such_dir" / "x.png"),
+                                       100, viewer_output_dir() / "no_such_dir" / "x.png"),
                     Catch::Contains("does not exist"));
-  CHECK_THROWS_WITH(viewer::read_png(out_dir() / "missing.png"), Catch::Contains("no such file"));
+  CHECK_THROWS_WITH(viewer::read_png(viewer_output_dir() / "missing.png"), Catch::Contains("no such file"));
 }

@@ -52,7 +52,7 @@ const ParamSpec& spec(const std::string& name) {
   throw std::logic_error("unreachable");
 }
 
-std::string error_for(const std::map<std::string, ParamValue>& given) {
+std::string error_message_for(const std::map<std::string, ParamValue>& given) {
   try {
     validate_params(table().specs(), given);
   } catch (const ParamError& e) {
@@ -141,20 +141,20 @@ TEST_CASE("a parameter table's reader agrees with its specs", "[params]") {
 
 TEST_CASE("bad values for a table's parameters name the parameter and the allowed values",
           "[params]") {
-  CHECK(error_for({{"delta", 0.5}}) ==
+  CHECK(error_message_for({{"delta", 0.5}}) ==
         "parameter 'delta': 0.5 is out of range; allowed: real in [0.001, 0.2] (m)");
-  CHECK(error_for({{"angle", 91.0}}) ==
+  CHECK(error_message_for({{"angle", 91.0}}) ==
         "parameter 'angle': 91 is out of range; allowed: real in [0, 90] (deg)");
-  CHECK(error_for({{"rounds", 2.5}}) ==
+  CHECK(error_message_for({{"rounds", 2.5}}) ==
         "parameter 'rounds': 2.5 is a real; allowed: integer in [1, 100]");
-  CHECK(error_for({{"seed", std::int64_t{-1}}}) ==
+  CHECK(error_message_for({{"seed", std::int64_t{-1}}}) ==
         "parameter 'seed': -1 is out of range; allowed: integer >= 0");
-  CHECK(error_for({{"mirror", std::string("yes")}}) ==
+  CHECK(error_message_for({{"mirror", std::string("yes")}}) ==
         "parameter 'mirror': \"yes\" is a string; allowed: true or false");
-  CHECK(error_for({{"mode", std::string("guess")}}) ==
+  CHECK(error_message_for({{"mode", std::string("guess")}}) ==
         "parameter 'mode': \"guess\" is not a choice; allowed: one of: fit, snap");
-  CHECK(error_for({{"label", 1.0}}) == "parameter 'label': 1 is a real; allowed: any string");
-  CHECK(error_for({{"rounds_", std::int64_t{1}}}) ==
+  CHECK(error_message_for({{"label", 1.0}}) == "parameter 'label': 1 is a real; allowed: any string");
+  CHECK(error_message_for({{"rounds_", std::int64_t{1}}}) ==
         "unknown parameter 'rounds_'; declared: delta, angle, rounds, seed, mirror, mode, label, "
         "rule, normal_z");
   // Text from a command line goes through the same spec.

@@ -5,23 +5,16 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "event_line_error.hpp"
 #include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
 #include "sketchlab/session.hpp"
 
 using namespace sketchlab;
+using sketchlab::test::event_line_error;
 
 namespace {
-
-std::string message_of(const std::string& line) {
-  try {
-    event_from_json_line(line);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // Adds each stroke as a straight curve between its end samples.
 class LineCorrector : public Corrector {
@@ -92,9 +85,9 @@ TEST_CASE("recompute_surface events survive write -> read -> write exactly", "[r
 }
 
 TEST_CASE("recompute_surface events with extra fields are rejected", "[recording][recompute]") {
-  CHECK_THAT(message_of(R"({"t":1.0,"type":"recompute_surface","point":[0,0,0]})"),
+  CHECK_THAT(event_line_error(R"({"t":1.0,"type":"recompute_surface","point":[0,0,0]})"),
              Catch::Contains("point"));
-  CHECK_THAT(message_of(R"({"type":"recompute_surface"})"), Catch::Contains("'t'"));
+  CHECK_THAT(event_line_error(R"({"type":"recompute_surface"})"), Catch::Contains("'t'"));
 }
 
 TEST_CASE("sessions forward recompute_surface to the surfacer as an undoable step", "[session][recompute]") {

@@ -4,27 +4,20 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "event_line_error.hpp"
 #include "sketchlab/recording/event_json.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
 #include "sketchlab/recording/recording_writer.hpp"
 #include "sketchlab/session.hpp"
 
 using namespace sketchlab;
+using sketchlab::test::event_line_error;
 
 namespace {
 
 Event relation(double t, ConstraintKind kind, std::vector<StrokeId> strokes,
                std::vector<double> parameters, std::string track = "ground_truth") {
   return Event{t, RelationEvent{std::move(track), kind, std::move(strokes), std::move(parameters)}};
-}
-
-std::string message_of(const std::string& line) {
-  try {
-    event_from_json_line(line);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace
@@ -61,21 +54,21 @@ TEST_CASE("relation events of every kind survive write -> read -> write exactly"
 
 TEST_CASE("malformed relation events are rejected with the field named", "[recording][relation]") {
   const std::string head = R"({"t":1.0,"type":"relation",)";
-  CHECK_THAT(message_of(head + R"("track":"gt","kind":"skewed","strokes":[1],"parameters":[]})"),
+  CHECK_THAT(event_line_error(head + R"("track":"gt","kind":"skewed","strokes":[1],"parameters":[]})"),
              Catch::Contains("unknown constraint kind 'skewed'") && Catch::Contains("parallel"));
-  CHECK_THAT(message_of(head + R"("track":"gt","kind":"parallel","strokes":[],"parameters":[]})"),
+  CHECK_THAT(event_line_error(head + R"("track":"gt","kind":"parallel","strokes":[],"parameters":[]})"),
              Catch::Contains("'strokes' must name at least one stroke"));
-  CHECK_THAT(message_of(head + R"("track":"","kind":"parallel","strokes":[1],"parameters":[]})"),
+  CHECK_THAT(event_line_error(head + R"("track":"","kind":"parallel","strokes":[1],"parameters":[]})"),
              Catch::Contains("'track' must not be empty"));
-  CHECK_THAT(message_of(head + R"("track":"gt","kind":"parallel","strokes":[-1],"parameters":[]})"),
+  CHECK_THAT(event_line_error(head + R"("track":"gt","kind":"parallel","strokes":[-1],"parameters":[]})"),
              Catch::Contains("strokes[0]"));
-  CHECK_THAT(message_of(head + R"("track":"gt","kind":"parallel","strokes":[1],"parameters":[null]})"),
+  CHECK_THAT(event_line_error(head + R"("track":"gt","kind":"parallel","strokes":[1],"parameters":[null]})"),
              Catch::Contains("parameters[0]"));
-  CHECK_THAT(message_of(head + R"("track":"gt","kind":"parallel","strokes":[1]})"),
+  CHECK_THAT(event_line_error(head + R"("track":"gt","kind":"parallel","strokes":[1]})"),
              Catch::Contains("missing field 'parameters'"));
-  CHECK_THAT(message_of(head + R"("track":"gt","kind":"parallel","strokes":[1],"parameters":[],"x":1})"),
+  CHECK_THAT(event_line_error(head + R"("track":"gt","kind":"parallel","strokes":[1],"parameters":[],"x":1})"),
              Catch::Contains("unknown field 'x'"));
-  CHECK_THAT(message_of(R"({"t":1.0,"type":"scribble"})"), Catch::Contains("relation"));
+  CHECK_THAT(event_line_error(R"({"t":1.0,"type":"scribble"})"), Catch::Contains("relation"));
 }
 
 namespace {

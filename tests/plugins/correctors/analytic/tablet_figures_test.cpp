@@ -12,13 +12,13 @@
 
 namespace fs = std::filesystem;
 using namespace sketchlab;
-using test::metric;
+using sketchlab::test::metric;
 
 namespace {
 
 std::map<std::pair<std::string, std::string>, nlohmann::json> run_tablet(const std::string& name,
                                                                          const std::vector<fs::path>& recordings) {
-  return test::run_tablet_experiment(name, recordings, {"freehand", "analytic"});
+  return sketchlab::test::run_tablet_experiment(name, recordings, {"freehand", "analytic"});
 }
 
 struct Figures {
@@ -46,7 +46,7 @@ TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet s
       {"lamp_analytic", {0.0040, 0.70, 0.50, 0.80, 0.66}},
   };
   std::vector<fs::path> recordings;
-  for (const auto& [name, f] : expected) recordings.push_back(test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
+  for (const auto& [name, f] : expected) recordings.push_back(sketchlab::test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
   const auto cases = run_tablet("analytic_tablet_figures", recordings);
   for (const auto& [name, f] : expected) {
     INFO(name);
@@ -67,12 +67,12 @@ TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet s
 }
 
 TEST_CASE("analytic is exact on noise-free analytic-style sessions of boxes", "[analytic][tablet][slow]") {
-  const fs::path dir = test::fresh_dir("analytic_tablet_exact_data");
+  const fs::path dir = sketchlab::test::fresh_dir("analytic_tablet_exact_data");
   const std::vector<std::string> models{"cube", "chair", "mug", "lamp"};
   std::vector<fs::path> recordings;
   for (const std::string& model : models) {
     const fs::path rec = dir / (model + ".jsonl");
-    REQUIRE(test::run_cli("synth " + model + " --modality tablet --param style=analytic --noise 0 -o " + rec.string(),
+    REQUIRE(sketchlab::test::run_cli("synth " + model + " --modality tablet --param style=analytic --noise 0 -o " + rec.string(),
                           dir / (model + ".txt")) == 0);
     recordings.push_back(rec);
   }

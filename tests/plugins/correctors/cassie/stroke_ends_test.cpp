@@ -14,6 +14,7 @@
 using namespace sketchlab;
 using namespace sketchlab::cassie;
 using sketchlab::test::add_curve;
+using sketchlab::test::find_kind;
 using sketchlab::test::make_stroke;
 using sketchlab::test::straight;
 
@@ -28,12 +29,6 @@ Candidate on(const Curve& stroke, double t, CurveId curve, double t_curve, const
   c.t_stroke = t;
   c.distance = (evaluate(stroke, t) - target).norm();
   return c;
-}
-
-const Constraint* find_kind(const Correction& c, ConstraintKind k) {
-  for (const Constraint& x : c.constraints)
-    if (x.kind == k) return &x;
-  return nullptr;
 }
 
 }  // namespace

@@ -10,15 +10,10 @@
 using namespace sketchlab;
 using namespace sketchlab::cassie;
 using sketchlab::test::add_curve;
+using sketchlab::test::find_kind;
 using sketchlab::test::make_stroke;
 
 namespace {
-
-const Constraint* find_kind(const Correction& c, ConstraintKind k) {
-  for (const Constraint& x : c.constraints)
-    if (x.kind == k) return &x;
-  return nullptr;
-}
 
 // A gentle arc along x from -0.3 to 0.3 with sagitta `bow` (in y), offset z.
 std::function<Vec3(double)> arc_x(double bow, double z, double y0 = 0.0) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sketchlab/network_curve.hpp"
+#include "sketchlab/plugin/corrector.hpp"
 #include "sketchlab/sketch.hpp"
 
 namespace sketchlab::test {
@@ -36,6 +37,13 @@ inline bool all_finite(const Curve& c) {
   for (const Vec3& p : c.control_points)
     if (!p.allFinite()) return false;
   return true;
+}
+
+// The correction's first constraint of kind k, or nullptr.
+inline const Constraint* find_kind(const Correction& c, ConstraintKind k) {
+  for (const Constraint& x : c.constraints)
+    if (x.kind == k) return &x;
+  return nullptr;
 }
 
 // A straight poly-Bézier of k segments from a to b (smooth joints).

@@ -13,7 +13,7 @@ using namespace sketchlab::openxr;
 
 namespace {
 
-constexpr double dt = 1.0 / 90.0;
+constexpr double frame_dt = 1.0 / 90.0;
 
 InputSettings with_menu() {
   InputSettings s;
@@ -29,9 +29,9 @@ RigidPose left_hand() {
   return p;
 }
 
-ControllerFrame at(int frame, const Vec3& tip, double trigger) {
+ControllerFrame menu_frame(int frame, const Vec3& tip, double trigger) {
   ControllerFrame f;
-  f.time = frame * dt;
+  f.time = frame * frame_dt;
   f.hands[0].tracked = true;
   f.hands[0].aim = left_hand();
   f.hands[1].tracked = true;
@@ -45,7 +45,7 @@ std::vector<Event> pick(GestureInterpreter& g, int& frame, MenuItem item) {
   const Vec3 tip = menu_item_centre(left_hand(), item);
   std::vector<Event> all;
   for (double trigger : {0.0, 0.9, 0.9, 0.9, 0.0})
-    for (auto& e : g.step(at(frame++, tip, trigger))) all.push_back(std::move(e));
+    for (auto& e : g.step(menu_frame(frame++, tip, trigger))) all.push_back(std::move(e));
   return all;
 }
 
@@ -75,7 +75,7 @@ TEST_CASE("picking menu items records the commands and sets the tool and view", 
   g.set_stack_count(2);
   int frame = 0;
   // Hovering highlights without a press.
-  g.step(at(frame++, menu_item_centre(left_hand(), MenuItem::undo), 0.0));
+  g.step(menu_frame(frame++, menu_item_centre(left_hand(), MenuItem::undo), 0.0));
   CHECK(g.menu_hover() == MenuItem::undo);
 
   auto events = pick(g, frame, MenuItem::shape);
@@ -105,10 +105,10 @@ TEST_CASE("picking menu items records the commands and sets the tool and view", 
   // A press on the menu never starts a stroke, even when the tip then
   // leaves the menu with the trigger held.
   const Vec3 tip = menu_item_centre(left_hand(), MenuItem::raw_strokes);
-  g.step(at(frame++, tip, 0.9));
-  for (int k = 1; k <= 10; ++k) CHECK(g.step(at(frame++, Vec3(0.1 * k, 1.5, 0.0), 0.9)).empty());
+  g.step(menu_frame(frame++, tip, 0.9));
+  for (int k = 1; k <= 10; ++k) CHECK(g.step(menu_frame(frame++, Vec3(0.1 * k, 1.5, 0.0), 0.9)).empty());
   CHECK(g.stroke_in_progress().empty());
-  CHECK(g.step(at(frame++, Vec3(1.0, 1.5, 0.0), 0.0)).empty());
+  CHECK(g.step(menu_frame(frame++, Vec3(1.0, 1.5, 0.0), 0.0)).empty());
 }
 
 TEST_CASE("compare needs two stacks", "[openxr]") {
@@ -129,7 +129,7 @@ TEST_CASE("the patch and erase tools act once per trigger press at the tip", "[o
   const Vec3 p(0.2, 1.5, -0.1);
   std::vector<Event> events;
   for (double trigger : {0.0, 0.8, 0.8, 0.8, 0.0})
-    for (auto& e : g.step(at(frame++, p, trigger))) events.push_back(std::move(e));
+    for (auto& e : g.step(menu_frame(frame++, p, trigger))) events.push_back(std::move(e));
   REQUIRE(events.size() == 1);
   CHECK((std::get<AddPatchEvent>(events[0].payload).point - p).norm() < 1e-12);
 
@@ -137,7 +137,7 @@ TEST_CASE("the patch and erase tools act once per trigger press at the tip", "[o
   CHECK(g.tool() == Tool::erase);
   events.clear();
   for (double trigger : {0.0, 0.8, 0.0})
-    for (auto& e : g.step(at(frame++, p, trigger))) events.push_back(std::move(e));
+    for (auto& e : g.step(menu_frame(frame++, p, trigger))) events.push_back(std::move(e));
   REQUIRE(events.size() == 1);
   const auto& del = std::get<DeleteNearEvent>(events[0].payload);
   CHECK((del.point - p).norm() < 1e-12);
@@ -156,10 +156,10 @@ TEST_CASE("without the hand menu (headless recording) a press there is a stroke"
   GestureInterpreter g(InputSettings{}, Workspace{});
   int frame = 0;
   const Vec3 tip = menu_item_centre(left_hand(), MenuItem::undo);
-  g.step(at(frame++, tip, 0.9));
+  g.step(menu_frame(frame++, tip, 0.9));
   CHECK_FALSE(g.menu_hover().has_value());
-  g.step(at(frame++, tip + Vec3(0.05, 0, 0), 0.9));
-  const auto events = g.step(at(frame++, tip, 0.0));
+  g.step(menu_frame(frame++, tip + Vec3(0.05, 0, 0), 0.9));
+  const auto events = g.step(menu_frame(frame++, tip, 0.0));
   REQUIRE(events.size() == 1);
   CHECK(std::holds_alternative<StrokeEvent>(events[0].payload));
 }
@@ -168,9 +168,9 @@ TEST_CASE("a trigger held across a focus loss picks nothing when focus returns",
   GestureInterpreter g(with_menu(), Workspace{});
   int frame = 0;
   const Vec3 tip = menu_item_centre(left_hand(), MenuItem::undo);
-  g.step(at(frame++, tip, 0.9));  // pressed on the menu: undo
-  ControllerFrame lost = at(frame++, tip, 0.9);
+  g.step(menu_frame(frame++, tip, 0.9));  // pressed on the menu: undo
+  ControllerFrame lost = menu_frame(frame++, tip, 0.9);
   lost.focused = false;
   g.step(lost);
-  CHECK(g.step(at(frame++, tip, 0.9)).empty());
+  CHECK(g.step(menu_frame(frame++, tip, 0.9)).empty());
 }
