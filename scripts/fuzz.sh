@@ -20,7 +20,7 @@ harnesses=("$@")
 if [ ! -f "$dir/CMakeCache.txt" ]; then
   generator=()
   command -v ninja >/dev/null && generator=(-G Ninja)
-  # -O1 -g1 (line tables: file:line in the reports) compiles 20-25 % faster
+  # -O1 -g1 (line tables: file:line in the reports) compiles 17-23 % faster
   # than RelWithDebInfo's -O2 -g (patch_mesh.cpp 65 s against 78 s of CPU,
   # kkt_solve.cpp 22 s against 28 s), which CI builds from scratch.
   CC=clang CXX=clang++ cmake -S "$root" -B "$dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
