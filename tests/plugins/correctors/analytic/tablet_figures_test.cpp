@@ -12,13 +12,17 @@
 
 namespace fs = std::filesystem;
 using namespace sketchlab;
+using sketchlab::test::fresh_dir;
 using sketchlab::test::metric;
+using sketchlab::test::run_cli;
+using sketchlab::test::run_tablet_experiment;
+using sketchlab::test::source_path;
 
 namespace {
 
 std::map<std::pair<std::string, std::string>, nlohmann::json> run_tablet(const std::string& name,
                                                                          const std::vector<fs::path>& recordings) {
-  return sketchlab::test::run_tablet_experiment(name, recordings, {"freehand", "analytic"});
+  return run_tablet_experiment(name, recordings, {"freehand", "analytic"});
 }
 
 struct Figures {
@@ -46,7 +50,7 @@ TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet s
       {"lamp_analytic", {0.0040, 0.70, 0.50, 0.80, 0.66}},
   };
   std::vector<fs::path> recordings;
-  for (const auto& [name, f] : expected) recordings.push_back(sketchlab::test::source_path("data/synthetic/tablet/" + name + ".jsonl"));
+  for (const auto& [name, f] : expected) recordings.push_back(source_path("data/synthetic/tablet/" + name + ".jsonl"));
   const auto cases = run_tablet("analytic_tablet_figures", recordings);
   for (const auto& [name, f] : expected) {
     INFO(name);
@@ -67,13 +71,13 @@ TEST_CASE("analytic recovers the scaffold of the bundled analytic-style tablet s
 }
 
 TEST_CASE("analytic is exact on noise-free analytic-style sessions of boxes", "[analytic][tablet][slow]") {
-  const fs::path dir = sketchlab::test::fresh_dir("analytic_tablet_exact_data");
+  const fs::path dir = fresh_dir("analytic_tablet_exact_data");
   const std::vector<std::string> models{"cube", "chair", "mug", "lamp"};
   std::vector<fs::path> recordings;
   for (const std::string& model : models) {
     const fs::path rec = dir / (model + ".jsonl");
-    REQUIRE(sketchlab::test::run_cli("synth " + model + " --modality tablet --param style=analytic --noise 0 -o " + rec.string(),
-                          dir / (model + ".txt")) == 0);
+    REQUIRE(run_cli("synth " + model + " --modality tablet --param style=analytic --noise 0 -o " + rec.string(),
+                    dir / (model + ".txt")) == 0);
     recordings.push_back(rec);
   }
   const auto cases = run_tablet("analytic_tablet_exact", recordings);

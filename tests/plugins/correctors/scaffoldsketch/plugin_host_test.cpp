@@ -14,6 +14,7 @@
 
 using namespace sketchlab;
 using namespace sketchlab::scaffoldsketch;
+using sketchlab::test::source_path;
 
 TEST_CASE("the plugin loads and declares the paper's defaults", "[scaffoldsketch]") {
   PluginHost host;
@@ -42,7 +43,7 @@ TEST_CASE("replaying hat.jsonl through the plugin", "[scaffoldsketch][slow]") {
   PluginHost host;
   host.load_directories({SKETCHLAB_BUILD_PLUGIN_DIR});
   const auto corrector = host.make_corrector("scaffoldsketch", {});
-  const Recording rec = read_recording(sketchlab::test::source_path("data/recordings/hat.jsonl"));
+  const Recording rec = read_recording(source_path("data/recordings/hat.jsonl"));
   Session session(rec.header.workspace, corrector, nullptr);
   int strokes = 0, lines = 0, curves = 0, ticks = 0, iterations = 0;
   for (const Event& e : rec.events) {
@@ -81,7 +82,7 @@ TEST_CASE("scaffold lines of CASSIE sessions converge in a bounded number of IRL
   for (const char* name : {"data/recordings/chair.jsonl", "data/recordings/02-1-2.jsonl"}) {
     INFO(name);
     const auto corrector = host.make_corrector("scaffoldsketch", {});
-    const Recording rec = read_recording(sketchlab::test::source_path(name));
+    const Recording rec = read_recording(source_path(name));
     Session session(rec.header.workspace, corrector, nullptr);
     const Vec3 up = rec.header.workspace.up.normalized();
     int lines = 0, level = 0;
