@@ -19,6 +19,31 @@ std::string range_error(const char* name, double value, const char* allowed) {
   return s.str();
 }
 
+// Item 1 as CASSIE's structuring shows it (app_trim_last_end): the kept
+// points `pts` (times `ts`, input sample `index` of each) end where the input
+// (`points`, `times`) puts the hand `trim` seconds before the last of them,
+// interpolated on the input; the kept points after that time are dropped and
+// the end's index is the input sample before it. Unchanged unless that time
+// is after the first kept point.
+void trim_last_end(const std::vector<Vec3>& points, const std::vector<double>& times, double trim,
+                   std::vector<Vec3>& pts, std::vector<double>& ts, std::vector<std::size_t>& index) {
+  const double t = ts.back() - trim;
+  if (!(trim > 0.0) || !(t > ts.front())) return;
+  std::size_t j = index.back();
+  while (times[j - 1] > t) --j;  // times[j - 1] <= t < times[j]: the first kept time stops it
+  const double u = (t - times[j - 1]) / (times[j] - times[j - 1]);
+  const Vec3 end = points[j - 1] + u * (points[j] - points[j - 1]);
+  while (ts.back() > t) {
+    pts.pop_back();
+    ts.pop_back();
+    index.pop_back();
+  }
+  if (end == pts.back()) return;  // a kept sample at that very time ends it
+  pts.push_back(end);
+  ts.push_back(t);
+  index.push_back(j - 1);
+}
+
 // The CASSIE app's pipeline (reference items 1–4); d = δ/s.
 Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<double>& times,
                             const PreprocessParams& params, double d) {
@@ -34,12 +59,14 @@ Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<d
   }
   std::vector<Vec3> pts;
   std::vector<double> ts;
-  for (std::size_t i : in.indices) {
+  std::vector<std::size_t> index = in.indices;
+  for (std::size_t i : index) {
     pts.push_back(points[i]);
     if (!times.empty()) ts.push_back(times[i]);
   }
+  if (params.app_trim_last_end && ts.size() >= 2) trim_last_end(points, times, params.app_end_trim, pts, ts, index);
   Preprocessed out;
-  out.kept = {in.indices.front(), in.indices.back()};
+  out.kept = {index.front(), index.back()};
   // Item 2: the line test comes first, on the filtered samples, hooks
   // included; the app compares the excess ratio with δ(s) itself.
   if (params.detect_lines && detect_line_by_excess(pts, ts, d, d / params.app_line_time, d).is_line) {
@@ -58,7 +85,7 @@ Preprocessed preprocess_app(const std::vector<Vec3>& points, const std::vector<d
     r = find_hookless_range_by_turns(pts, hp);
     out.hook_cut = {r.first > 0, r.last + 1 < pts.size()};
   }
-  out.kept = {in.indices[r.first], in.indices[r.last]};
+  out.kept = {index[r.first], index[r.last]};
   out.points.assign(pts.begin() + static_cast<std::ptrdiff_t>(r.first),
                     pts.begin() + static_cast<std::ptrdiff_t>(r.last) + 1);
   // Item 4: corners on the raw samples, then RDP and Schneider per section.

@@ -5,6 +5,12 @@
 
 namespace sketchlab::cassie {
 
+PreprocessParams cassie_structuring_preprocess() {
+  PreprocessParams p = cassie_app_preprocess();
+  p.app_trim_last_end = true;
+  return p;
+}
+
 Thresholds thresholds(const CassieParams& p, double s) {
   Thresholds t;
   t.delta = scaled_threshold(p.delta, s);
@@ -173,6 +179,9 @@ const ParamTable<Settings>& parameters() {
           .boolean("filter_input", pre(&PreprocessParams::app_filter_input),
                    "drop samples closer than 0.1δ, strokes too short or brief, samples of the first and last "
                 "0.02 s (item 1; cassie_app preprocessing)")
+          .boolean("trim_last_end", pre(&PreprocessParams::app_trim_last_end),
+                   "end the curve where the hand was 0.02 s before the last sample (the curves of CASSIE's "
+                "structuring never reach it, README); false: item 1 as stated, both end samples kept")
           .real("input_spacing", c(&C::input_spacing_factor), 0.0, 5.0, "δ",
                 "before preprocessing, insert points in gaps between samples longer than this (0: off); "
                 "exported CASSIE sessions are RDP-thinned at 2 mm, the app's turn rules saw 90 Hz (items 3-4)")

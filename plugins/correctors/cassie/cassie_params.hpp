@@ -59,6 +59,11 @@ enum class SurfaceTouch { brush, control_points };
 // curves (on_surface.hpp's `SurfaceBrush::away`) is (README, "CASSIE's patches in the rebuild").
 enum class SurfaceSpan { box, stroke_ends, brush };
 
+// Items 1–4 as CASSIE structures a stroke: the app's preprocessing
+// (cassie_app_preprocess) with the last end trimmed by item 1's 0.02 s, as
+// its curves show (README, "Where this differs from the reference").
+PreprocessParams cassie_structuring_preprocess();
+
 struct CassieParams {
   double delta = 0.02;                   // m, δ at zoom 1 (thesis §3.2.3.1)
   double angle = std::numbers::pi / 6;   // rad, θ (thesis §3.2.3.1)
@@ -110,7 +115,7 @@ struct CassieParams {
   SurfaceTouch surface_touch = SurfaceTouch::brush;
   SurfaceSpan surface_span = SurfaceSpan::brush;
   MirrorMode mirror = MirrorMode::workspace;
-  PreprocessParams preprocess = cassie_app_preprocess();  // items 1–4
+  PreprocessParams preprocess = cassie_structuring_preprocess();  // items 1–4
   double input_spacing_factor = 0.0;     // ×δ, densify the samples first (input_density.hpp; 0: off)
   // With the reference's own decisions (parameter `oracle`, a file the
   // plugin reads: constraint_oracle.hpp), how close (×δ) one of our targets

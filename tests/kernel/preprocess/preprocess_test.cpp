@@ -101,3 +101,45 @@ TEST_CASE("preprocess_stroke rejects unusable strokes", "[preprocess]") {
   const Preprocessed two = preprocess_stroke({Vec3::Zero(), Vec3(0.1, 0, 0)}, {}, p, 1.0);
   REQUIRE(validate(two.curve).empty());
 }
+
+// Item 1 as CASSIE's structuring shows it (app_trim_last_end): the curve ends
+// where the sample times put the hand 0.02 s before the last sample, read on
+// the input between the two samples around that time; the first end stays at
+// the first sample, and without the flag the last end too.
+TEST_CASE("app_trim_last_end ends the curve 0.02 s before the last sample", "[preprocess]") {
+  std::mt19937_64 rng(8);
+  struct Case {
+    const char* name;
+    test::SyntheticStroke s;
+    bool line;
+  };
+  // An arc (6.8 mm between samples, 13.6 ms apart) and a quick straight
+  // stroke (item 2 makes it a line, whose ends are the trimmed samples').
+  const std::vector<Case> cases{
+      {"arc", test::sample_path(test::arc(0.2, 2.0), 60, 0.0, 0.5, rng), false},
+      {"line", test::sample_path(test::straight(Vec3(0, 1, 0), Vec3(0.3, 1.0, 0.1)), 50, 0.0, 1.0, rng), true}};
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const std::vector<Vec3>& p = c.s.points;
+    const std::vector<double>& t = c.s.times;
+    PreprocessParams params = cassie_app_preprocess();
+    const Preprocessed kept = preprocess_stroke(p, t, params, 1.0);
+    params.app_trim_last_end = true;
+    const Preprocessed trimmed = preprocess_stroke(p, t, params, 1.0);
+    REQUIRE(kept.is_line == c.line);
+    REQUIRE(trimmed.is_line == c.line);
+
+    const double at = t.back() - params.app_end_trim;
+    std::size_t j = 1;
+    while (t[j] <= at) ++j;
+    const Vec3 expected = p[j - 1] + (at - t[j - 1]) / (t[j] - t[j - 1]) * (p[j] - p[j - 1]);
+    CHECK((trimmed.curve.control_points.back() - expected).norm() < 1e-12);
+    CHECK(trimmed.curve.control_points.front() == p.front());
+    CHECK(trimmed.kept == IndexRange{0, j - 1});
+    CHECK(kept.curve.control_points.back() == p.back());
+    CHECK(kept.curve.control_points.front() == p.front());
+    // The trim is the hand's last 0.02 s: speed × 0.02 s back along the stroke.
+    const double speed = c.line ? 1.0 : 0.5;
+    CHECK((p.back() - expected).norm() == Approx(speed * params.app_end_trim).epsilon(0.01));
+  }
+}

@@ -55,6 +55,12 @@ struct PreprocessParams {
   double app_min_length_factor = 0.5;        // ×δ: shorter strokes are dropped (item 1)
   double app_min_duration = 0.2;             // s: briefer strokes with ends < 0.5δ apart are dropped
   double app_end_trim = 0.02;                // s: samples this close to either end are removed
+  // Item 1 keeps both end samples. Set, the last one is moved back to where
+  // the sample times put the hand app_end_trim before it (the samples after
+  // that time dropped): CASSIE's structured curves end there (plugin cassie,
+  // README "Where this differs from the reference"); its Freehand system
+  // ends at the last sample.
+  bool app_trim_last_end = false;
   double app_line_time = 0.05;               // s: a line is faster than δ per this time (item 2)
   double app_hook_angle = std::numbers::pi / 6;  // rad: turn that cuts a hook (item 3)
   TurnSpan app_hook_turn = TurnSpan::consecutive;  // how that turn is measured (turns.hpp)
@@ -73,7 +79,9 @@ std::string validate(const PreprocessParams& params);
 
 struct Preprocessed {
   std::vector<Vec3> points;  // the points fitted: input within `kept` (hooks cut; cassie_app: filtered)
-  IndexRange kept;           // indices of the input of the first and last point kept
+  // Indices of the input of the first and last point kept (app_trim_last_end:
+  // the last point lies between input kept.last and the next).
+  IndexRange kept;
   bool is_line = false;
   std::array<bool, 2> hook_cut{false, false};  // a hook was cut at the start / end
   Curve curve;  // make_line(first, last kept point) for lines, else the fit

@@ -144,3 +144,34 @@ TEST_CASE("Item 10: closure is a hard constraint in every subset, skipped when b
     CHECK_FALSE(c.edit.curves_added[0].curve.closed);
   }
 }
+
+// CASSIE's structured curves never reach the last raw sample (README, "Where
+// this differs from the reference"): by default the curve ends where the
+// sample times put the hand 0.02 s before it (`trim_last_end`), the first end
+// at the first sample; `trim_last_end=false` keeps item 1 as stated.
+TEST_CASE("Item 1: the last end is where the hand was 0.02 s before the last sample", "[cassie][ends]") {
+  const Params defaults = validate_params(param_specs(), {});
+  CHECK(params_from(defaults).preprocess.app_trim_last_end);
+  CHECK_FALSE(params_from(validate_params(param_specs(), {{"trim_last_end", ParamValue{false}}}))
+                  .preprocess.app_trim_last_end);
+
+  // 41 samples over 1 s of a planar arc 0.6 m long: 0.98 s lies between
+  // samples 39 (0.975 s) and 40 (1 s), a fifth of the way.
+  const Stroke s = make_stroke(3, 41, [](double u) {
+    return Vec3(-0.3 + 0.6 * u, 0.08 * (1 - std::pow(2 * u - 1, 2)), 0.1);
+  });
+  const Vec3 a = s.samples[39].position, b = s.samples[40].position;
+  const Vec3 expected = a + 0.2 * (b - a);
+  CassieParams p;
+  p.planarity = false;
+  const Correction trimmed = correct_stroke(s, Sketch{}, p);
+  REQUIRE(trimmed.edit.curves_added.size() == 1);
+  const Curve& c = trimmed.edit.curves_added[0].curve;
+  CHECK((c.control_points.back() - expected).norm() < 1e-12);
+  CHECK((c.control_points.front() - s.samples.front().position).norm() < 1e-12);
+
+  p.preprocess.app_trim_last_end = false;
+  const Correction kept = correct_stroke(s, Sketch{}, p);
+  REQUIRE(kept.edit.curves_added.size() == 1);
+  CHECK((kept.edit.curves_added[0].curve.control_points.back() - b).norm() < 1e-12);
+}

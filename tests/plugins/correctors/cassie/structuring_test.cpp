@@ -177,12 +177,13 @@ TEST_CASE("A planar stroke tilted within θ of an axis plane gets the axis plane
 
 TEST_CASE("A nearly closed loop closes", "[cassie]") {
   Sketch sketch;
-  // 350° of a 15 cm circle: the ends are 2.6 cm apart (< 2δ = 4 cm).
+  // 350° of a 15 cm circle drawn in 3 s: the ends are 2.6 cm apart, 3.2 cm
+  // once the last 0.02 s are trimmed (< 2δ = 4 cm).
   auto f = [](double u) {
     const double a = (350.0 / 360.0) * 2 * std::numbers::pi * u;
     return Vec3(0.15 * std::cos(a), 0.15 * std::sin(a), 0.0);
   };
-  const Stroke s = make_stroke(4, 150, f);
+  const Stroke s = make_stroke(4, 150, f, 3.0);
   const Correction c = correct_stroke(s, sketch, CassieParams{});
   REQUIRE(c.error.empty());
   const Curve& out = c.edit.curves_added[0].curve;
