@@ -10,7 +10,7 @@ def parse(argv, default_sessions="structured"):
     A value reads as true/false, a number or else a string. With no session
     named: "structured", the Armature/Patch study sessions and the showcase
     sketches of data/recordings; "logged", every session with a raw_data log
-    but the Freehand ones."""
+    but the Freehand ones; "all", every session of data/recordings."""
     params, sessions = {}, []
     it = iter(argv)
     for arg in it:
@@ -25,7 +25,9 @@ def parse(argv, default_sessions="structured"):
             except ValueError:
                 pass
     if not sessions:
-        if default_sessions == "logged":
+        if default_sessions == "all":
+            sessions = sorted(os.path.basename(p)[:-6] for p in glob.glob("data/recordings/*.jsonl"))
+        elif default_sessions == "logged":
             sessions = sorted(os.path.basename(p)[:-5] for p in glob.glob("data/cassie/raw_data/*.json")
                               if "-0-" not in os.path.basename(p))
         else:

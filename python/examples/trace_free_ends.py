@@ -16,8 +16,6 @@ With no session named: every session of data/recordings, Freehand ones
 included (compared there with the freehand corrector: CASSIE only fitted
 them).
 """
-import glob
-import os
 import sys
 
 import example_args
@@ -58,13 +56,13 @@ def main(sessions, params):
                 continue
             if not freehand and (log is None or log["applied"] or log["rejected"]):
                 continue
+            length = np.linalg.norm(np.diff(raw, axis=0), axis=1).sum()
             theirs = np.array(r.reference_curve.sample(2))
             ours = np.array(r.output_curve.sample(2))
             if r.reversed:
                 ours = ours[::-1]
             for who, ends in (("cassie", theirs), ("ours", ours)):
                 d0, d1 = np.linalg.norm(ends[0] - raw[0]), np.linalg.norm(ends[-1] - raw[-1])
-                length = np.linalg.norm(np.diff(raw, axis=0), axis=1).sum()
                 rows.setdefault((group(session), who), []).append((d0, d1, on_last_segment(raw, ends[-1]), length))
     print("group who strokes first_exact_pct first_median_mm last_exact_pct last_median_mm last_t_median")
     for (g, who), v in sorted(rows.items()):
@@ -81,7 +79,5 @@ def main(sessions, params):
 
 
 if __name__ == "__main__":
-    sessions, params = example_args.parse(sys.argv[1:])
-    if not sys.argv[1:] or all(a.startswith("--") or "=" in a for a in sys.argv[1:]):
-        sessions = sorted(os.path.basename(p)[:-6] for p in glob.glob("data/recordings/*.jsonl"))
+    sessions, params = example_args.parse(sys.argv[1:], "all")
     main(sessions, {"mirror": "plane", **params})

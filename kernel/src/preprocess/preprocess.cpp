@@ -20,25 +20,40 @@ std::string range_error(const char* name, double value, const char* allowed) {
 }
 
 // Item 1 as CASSIE's structuring shows it (app_trim_last_end): the kept
-// points `pts` (times `ts`, input sample `index` of each) end where the input
-// (`points`, `times`) puts the hand `trim` seconds before the last of them,
-// interpolated on the input; the kept points after that time are dropped and
-// the end's index is the input sample before it. Unchanged unless that time
-// is after the first kept point.
+// points `pts` (times `ts`, input sample `index` of each) end `trim` seconds
+// of hand motion before the last of them, at the hand's mean speed over the
+// input's last kEndSpeedWindow seconds, measured back along the input
+// (`points`, `times`); the kept points beyond are dropped and the end's index
+// is the input sample before it. A mean speed rather than the time of each
+// sample: a desktop viewer stamps coalesced input events with one time, which
+// would put all of a burst's motion in no time at the end. Unchanged when the
+// input gives no speed or the stroke is shorter than the cut.
+constexpr double kEndSpeedWindow = 0.1;  // s: 9 frames at 90 Hz
 void trim_last_end(const std::vector<Vec3>& points, const std::vector<double>& times, double trim,
                    std::vector<Vec3>& pts, std::vector<double>& ts, std::vector<std::size_t>& index) {
-  const double t = ts.back() - trim;
-  if (!(trim > 0.0) || !(t > ts.front())) return;
-  std::size_t j = index.back();
-  while (times[j - 1] > t) --j;  // times[j - 1] <= t < times[j]: the first kept time stops it
-  const double u = (t - times[j - 1]) / (times[j] - times[j - 1]);
-  const Vec3 end = points[j - 1] + u * (points[j] - points[j - 1]);
-  while (ts.back() > t) {
+  const std::size_t first = index.front(), last = index.back();
+  std::size_t from = last;
+  while (from > first && times[last] - times[from] < kEndSpeedWindow) --from;
+  double window = 0.0;
+  for (std::size_t i = from; i < last; ++i) window += (points[i + 1] - points[i]).norm();
+  const double span = times[last] - times[from];
+  if (!(trim > 0.0) || !(span > 0.0) || !(window > 0.0)) return;
+  double cut = window / span * trim;
+  std::size_t j = last;  // the end lies on the input segment [j - 1, j]
+  while (j > first && (points[j] - points[j - 1]).norm() < cut) {
+    cut -= (points[j] - points[j - 1]).norm();
+    --j;
+  }
+  if (j == first) return;
+  const double u = cut / (points[j] - points[j - 1]).norm();  // back from j, in (0, 1]
+  const Vec3 end = points[j] + u * (points[j - 1] - points[j]);
+  const double t = times[j] + u * (times[j - 1] - times[j]);
+  while (index.back() >= j) {
     pts.pop_back();
     ts.pop_back();
     index.pop_back();
   }
-  if (end == pts.back()) return;  // a kept sample at that very time ends it
+  if (end == pts.back()) return;  // the cut ends on a kept sample
   pts.push_back(end);
   ts.push_back(t);
   index.push_back(j - 1);

@@ -180,7 +180,7 @@ const ParamTable<Settings>& parameters() {
                    "drop samples closer than 0.1δ, strokes too short or brief, samples of the first and last "
                 "0.02 s (item 1; cassie_app preprocessing)")
           .boolean("trim_last_end", pre(&PreprocessParams::app_trim_last_end),
-                   "end the curve where the hand was 0.02 s before the last sample (the curves of CASSIE's "
+                   "end the curve 0.02 s of hand motion before the last sample (the curves of CASSIE's "
                 "structuring never reach it, README); false: item 1 as stated, both end samples kept")
           .real("input_spacing", c(&C::input_spacing_factor), 0.0, 5.0, "δ",
                 "before preprocessing, insert points in gaps between samples longer than this (0: off); "

@@ -83,7 +83,9 @@ class ViewerProcess {
     xdotool("key --clearmodifiers " + k);
     std::this_thread::sleep_for(std::chrono::milliseconds(150));
   }
-  // A left-button drag through `points` (window pixels, origin top-left).
+  // A left-button drag through `points` (window pixels, origin top-left),
+  // 20 ms a step at the least: a hand's pace, not a burst (the cassie stack
+  // ends a curve 0.02 s of motion before its last sample).
   void drag(const std::vector<std::pair<int, int>>& points) const {
     auto move = [&](std::pair<int, int> p) {
       xdotool("mousemove --window " + window_ + " " + std::to_string(p.first) + " " +
@@ -91,7 +93,10 @@ class ViewerProcess {
     };
     move(points.front());
     xdotool("mousedown 1");
-    for (std::size_t i = 1; i < points.size(); ++i) move(points[i]);
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      move(points[i]);
+    }
     xdotool("mouseup 1");
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }

@@ -173,7 +173,7 @@ TEST_CASE("a stroke stays until corrected, then the snapped curve glows in and i
   s << "frame 30 right/input/trigger/value=0\n";
   frame += 30;
   // The second stroke starts 6 mm from the first one's curve, which ends
-  // where the hand was 0.02 s before its last sample (cassie's default
+  // 0.02 s of motion before its last sample (cassie's default
   // trim_last_end): at 1 cm a frame, 1.8 cm short of x = 0.05. A snap.
   for (int k = 0; k <= 20; ++k, ++frame) {
     second.emplace_back(0.038, 1.404 + 0.01 * k, 0.0);

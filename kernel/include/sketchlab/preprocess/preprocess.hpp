@@ -55,11 +55,11 @@ struct PreprocessParams {
   double app_min_length_factor = 0.5;        // ×δ: shorter strokes are dropped (item 1)
   double app_min_duration = 0.2;             // s: briefer strokes with ends < 0.5δ apart are dropped
   double app_end_trim = 0.02;                // s: samples this close to either end are removed
-  // Item 1 keeps both end samples. Set, the last one is moved back to where
-  // the sample times put the hand app_end_trim before it (the samples after
-  // that time dropped): CASSIE's structured curves end there (plugin cassie,
-  // README "Where this differs from the reference"); its Freehand system
-  // ends at the last sample.
+  // Item 1 keeps both end samples. Set, the stroke ends app_end_trim of hand
+  // motion before its last sample (at the hand's mean speed over its last
+  // 0.1 s; the samples beyond dropped): CASSIE's structured curves end there
+  // (plugin cassie, README "Where this differs from the reference"); its
+  // Freehand system ends at the last sample.
   bool app_trim_last_end = false;
   double app_line_time = 0.05;               // s: a line is faster than δ per this time (item 2)
   double app_hook_angle = std::numbers::pi / 6;  // rad: turn that cuts a hook (item 3)

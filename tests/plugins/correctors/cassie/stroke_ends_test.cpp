@@ -146,19 +146,21 @@ TEST_CASE("Item 10: closure is a hard constraint in every subset, skipped when b
 }
 
 // CASSIE's structured curves never reach the last raw sample (README, "Where
-// this differs from the reference"): by default the curve ends where the
-// sample times put the hand 0.02 s before it (`trim_last_end`), the first end
-// at the first sample; `trim_last_end=false` keeps item 1 as stated.
-TEST_CASE("Item 1: the last end is where the hand was 0.02 s before the last sample", "[cassie][ends]") {
+// this differs from the reference"): by default the curve ends 0.02 s of
+// hand motion before it (`trim_last_end`), the first end at the first
+// sample; `trim_last_end=false` keeps item 1 as stated.
+TEST_CASE("Item 1: the last end is 0.02 s of hand motion before the last sample", "[cassie][ends]") {
   const Params defaults = validate_params(param_specs(), {});
   CHECK(params_from(defaults).preprocess.app_trim_last_end);
   CHECK_FALSE(params_from(validate_params(param_specs(), {{"trim_last_end", ParamValue{false}}}))
                   .preprocess.app_trim_last_end);
 
-  // 41 samples over 1 s of a planar arc 0.6 m long: 0.98 s lies between
-  // samples 39 (0.975 s) and 40 (1 s), a fifth of the way.
+  // 41 samples over 1 s of a circular arc 0.64 m long, at constant speed:
+  // 0.02 s is four fifths of the last step, so the curve ends a fifth of the
+  // way from sample 39 to sample 40.
   const Stroke s = make_stroke(3, 41, [](double u) {
-    return Vec3(-0.3 + 0.6 * u, 0.08 * (1 - std::pow(2 * u - 1, 2)), 0.1);
+    const double a = 1.6 * u - 0.8;
+    return Vec3(0.4 * std::sin(a), 0.4 * (1 - std::cos(a)), 0.1);
   });
   const Vec3 a = s.samples[39].position, b = s.samples[40].position;
   const Vec3 expected = a + 0.2 * (b - a);
