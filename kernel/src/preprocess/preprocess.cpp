@@ -1,10 +1,12 @@
 #include "sketchlab/preprocess/preprocess.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "sketchlab/geometry/polyline.hpp"
 #include "sketchlab/preprocess/bezier_fit.hpp"
 #include "sketchlab/preprocess/input_filter.hpp"
 #include "sketchlab/preprocess/line_detection.hpp"
@@ -32,22 +34,20 @@ constexpr double kEndSpeedWindow = 0.1;  // s: 9 frames at 90 Hz
 void trim_last_end(const std::vector<Vec3>& points, const std::vector<double>& times, double trim,
                    std::vector<Vec3>& pts, std::vector<double>& ts, std::vector<std::size_t>& index) {
   const std::size_t first = index.front(), last = index.back();
+  // Arclength along the input from `first`: s[i - first] at input sample i.
+  const std::vector<double> s =
+      cumulative_length(std::vector<Vec3>(points.begin() + first, points.begin() + last + 1));
   std::size_t from = last;
   while (from > first && times[last] - times[from] < kEndSpeedWindow) --from;
-  double window = 0.0;
-  for (std::size_t i = from; i < last; ++i) window += (points[i + 1] - points[i]).norm();
-  const double span = times[last] - times[from];
-  if (!(trim > 0.0) || !(span > 0.0) || !(window > 0.0)) return;
-  double cut = window / span * trim;
-  std::size_t j = last;  // the end lies on the input segment [j - 1, j]
-  while (j > first && (points[j] - points[j - 1]).norm() < cut) {
-    cut -= (points[j] - points[j - 1]).norm();
-    --j;
-  }
-  if (j == first) return;
-  const double u = cut / (points[j] - points[j - 1]).norm();  // back from j, in (0, 1]
-  const Vec3 end = points[j] + u * (points[j - 1] - points[j]);
-  const double t = times[j] + u * (times[j - 1] - times[j]);
+  const double span = times[last] - times[from], moved = s.back() - s[from - first];
+  if (!(trim > 0.0) || !(span > 0.0) || !(moved > 0.0)) return;
+  const double at = s.back() - moved / span * trim;  // the new end's arclength
+  if (!(at > 0.0)) return;
+  // The end lies on the input segment [j - 1, j]: s at j - 1 <= at < s at j.
+  const std::size_t j = first + static_cast<std::size_t>(std::upper_bound(s.begin(), s.end(), at) - s.begin());
+  const double u = (at - s[j - 1 - first]) / (s[j - first] - s[j - 1 - first]);
+  const Vec3 end = points[j - 1] + u * (points[j] - points[j - 1]);
+  const double t = times[j - 1] + u * (times[j] - times[j - 1]);
   while (index.back() >= j) {
     pts.pop_back();
     ts.pop_back();
