@@ -28,17 +28,21 @@ struct Plane {
 };
 
 // Item 8 (`FinalStroke.GetConstraint`): a target may snap only to the two
-// end nodes of the piece of the old curve it lies on, within `reuse`, and
-// only to a node with more than one incidence (every stroke end is a node in
-// CASSIE; a lone end is not an intersection). The piece's ends are the
-// nearest nodes on the curve before and after t; nodes farther than `reuse`
-// cannot qualify, so only those near the target are examined.
+// end nodes of the piece of the old curve it lies on, within `node_snap`,
+// and only to a node with more than one incidence (every stroke end is a
+// node in CASSIE; a lone end is not an intersection). The piece's ends are
+// the nearest nodes on the curve before and after t. A lone node at the old
+// curve's own end is joined within `dangling_snap`: item 22's graph reuses
+// a node "within δ on the old one" for an intersection, and CASSIE's curve
+// then ends on that node (cassie README, "A dangling end joined").
 std::optional<NodeId> snap_node(const Network& net, CurveId curve, double t, const Vec3& target,
-                                double reuse) {
+                                const Thresholds& th) {
+  const double reach = std::max(th.node_snap, th.dangling_snap);
+  const double t_max = net.curves().at(curve).curve.t_max();
   const Node* before = nullptr;
   const Node* after = nullptr;
   double tb = -1.0, ta = 0.0;
-  for (const NodeHit& h : net.nodes_near(target, reuse)) {
+  for (const NodeHit& h : net.nodes_near(target, reach)) {
     const Node& n = net.nodes().at(h.node);
     for (const NodeIncidence& inc : n.incidences) {
       if (inc.curve != curve) continue;
@@ -47,17 +51,21 @@ std::optional<NodeId> snap_node(const Network& net, CurveId curve, double t, con
     }
   }
   const Node* best = nullptr;
-  double best_d = reuse;
-  for (const Node* n : {before, after}) {
-    if (!n || n->incidences.size() < 2) continue;
+  double best_d = reach;
+  for (const auto& [n, tn] : {std::pair{before, tb}, std::pair{after, ta}}) {
+    if (!n) continue;
+    const bool at_curve_end = tn <= 0.0 || tn >= t_max;
+    const double limit = n->incidences.size() >= 2 ? th.node_snap
+                         : at_curve_end && th.dangling_snap > 0 ? th.dangling_snap
+                                                                 : -1.0;
     const double d = (n->position - target).norm();
-    if (d <= best_d) best = n, best_d = d;
+    if (d <= limit && d <= best_d) best = n, best_d = d;
   }
   return best ? std::optional<NodeId>(best->id) : std::nullopt;
 }
 
 Candidate curve_constraint(const Network& net, const CurveHit& hit, double time, const Vec3& brush,
-                           double reuse) {
+                           const Thresholds& th) {
   Candidate c;
   c.kind = TargetKind::curve;
   c.curve = hit.curve;
@@ -67,7 +75,7 @@ Candidate curve_constraint(const Network& net, const CurveHit& hit, double time,
   c.brush = brush;
   const Curve& old = net.curves().at(hit.curve).curve;
   c.at_curve_end = hit.t <= 0.0 || hit.t >= old.t_max();
-  if (const auto node = snap_node(net, hit.curve, hit.t, hit.point, reuse)) {
+  if (const auto node = snap_node(net, hit.curve, hit.t, hit.point, th)) {
     c.kind = TargetKind::node;
     c.node = *node;
     c.target = net.nodes().at(*node).position;
@@ -159,7 +167,7 @@ std::vector<Candidate> detect_constraints(const Stroke& stroke, const Sketch& sk
       if (plane && lies_in(net.curves().at(h.curve).curve, *plane, th.on_plane)) planar_curve = true;
     }
     for (const CurveHit& h : hits) {
-      if (!inside.count(h.curve)) events.push_back({time, 0, curve_constraint(net, h, time, b, th.node_snap)});
+      if (!inside.count(h.curve)) events.push_back({time, 0, curve_constraint(net, h, time, b, th)});
     }
     inside = std::move(now);
     if (plane) {
@@ -188,7 +196,7 @@ std::vector<Candidate> detect_constraints(const Stroke& stroke, const Sketch& sk
       c.brush = smp.position;
       const std::vector<CurveHit> near = net.curves_near(g, th.grid);
       if (!near.empty()) {
-        c = curve_constraint(net, near.front(), smp.time, smp.position, th.node_snap);
+        c = curve_constraint(net, near.front(), smp.time, smp.position, th);
       } else if (plane && std::abs(plane->side(g)) <= th.grid) {
         c.kind = TargetKind::mirror;
         c.target = plane->project(g);

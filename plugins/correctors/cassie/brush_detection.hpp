@@ -23,7 +23,9 @@ struct DetectionStats {
 // constraint when it enters a curve's collider tube (distance <= th.contact,
 // from the spatial index): the target is the closest point of the curve to
 // the brush; node kind when an end node of the crossed piece (with more than
-// one incidence) is within th.node_snap (item 8). Re-entering fires again.
+// one incidence) is within th.node_snap (item 8), or the crossed curve's own
+// end node with one incidence within th.dangling_snap (item 22). Re-entering
+// fires again.
 // Item 18 (`mirror` true): entering the mirror plane fires a plane
 // constraint at the brush projected onto it, unless a curve in contact
 // lies in the plane (the stroke beats the plane).

@@ -22,6 +22,7 @@ Thresholds thresholds(const CassieParams& p, double s) {
   t.plane_merge = p.plane_merge_factor * t.delta;
   t.reuse = p.reuse_factor * t.delta;
   t.node_snap = p.node_snap_factor * t.delta;
+  t.dangling_snap = p.dangling_snap_factor * t.delta;
   t.correction = p.correction_factor * t.delta;
   t.overlap = p.overlap_factor * t.delta;
   t.closure = p.closure_factor * t.delta;
@@ -76,6 +77,9 @@ const ParamTable<Settings>& parameters() {
           .real("node_snap", c(&C::node_snap_factor), 0.0, 5.0, "δ",
                 "a target snaps to an end node (two incidences or more) of the crossed piece within this "
                 "(item 8: δ)")
+          .real("dangling_snap", c(&C::dangling_snap_factor), 0.0, 5.0, "δ",
+                "a target this close to the crossed curve's own end node with one incidence joins that node "
+                "(item 22: a node within δ on the old curve is reused; 0: item 8's snap alone)")
           .real("correction", c(&C::correction_factor), 0.0, 5.0, "δ",
                 "targets tried on the old curve around the detected one, ± this (item 8: δ/2)")
           .integer("correction_points", c(&C::correction_points), 0.0, 64.0, "",

@@ -78,6 +78,7 @@ struct CassieParams {
   // Constraints (items 8, 11, 12).
   double reuse_factor = 1.0;             // ×δ, reuse an anchor within δ (item 12)
   double node_snap_factor = 1.0;         // ×δ, snap to an end node of the crossed piece (item 8)
+  double dangling_snap_factor = 1.0;     // ×δ, join the crossed curve's lone end node (item 22)
   double correction_factor = 0.5;        // ×δ, targets tried on the old curve: ±δ/2
   int correction_points = 6;             // ... this many
   bool correction_keeps_target = false;  // ... and the detected target itself (a second reading, README)
@@ -136,6 +137,7 @@ struct Thresholds {
   double plane_merge = 0.02;
   double reuse = 0.02;
   double node_snap = 0.02;
+  double dangling_snap = 0.02;
   double correction = 0.01;
   double overlap = 0.04;
   double closure = 0.04;

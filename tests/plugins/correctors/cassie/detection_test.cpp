@@ -92,7 +92,12 @@ TEST_CASE("Item 8 at detection: a target snaps to an end node of its piece with 
   CHECK(c[1].kind == TargetKind::node);
   CHECK(c[1].node == n.id);
   CHECK(c[1].target == Vec3::Zero());
-  // A lone curve end (one incidence) is not an intersection: no snap.
+}
+
+TEST_CASE("Items 8 and 22: a lone node joins only at the crossed curve's own end, within δ",
+          "[cassie][detection]") {
+  // Curve 1 from (-0.2, 0, 0) to the origin, its end a node of one incidence,
+  // and a left-over lone node inside it at x = -0.1.
   Sketch lone;
   add_curve(lone, make_line({-0.2, 0.0, 0.0}, {0.0, 0.0, 0.0}));
   Edit f;
@@ -101,10 +106,44 @@ TEST_CASE("Item 8 at detection: a target snaps to an end node of its piece with 
   end.position = Vec3::Zero();
   end.incidences = {{1, 1.0}};
   f.nodes_added.push_back(end);
+  Node inside;
+  inside.id = end.id + 1;
+  inside.position = Vec3(-0.1, 0.0, 0.0);
+  inside.incidences = {{1, 0.5}};
+  f.nodes_added.push_back(inside);
   lone.network.apply(f);
-  const auto d = detect(make_stroke(2, 40, [](double u) { return Vec3(-0.01, 0.1 - 0.2 * u, 0.0); }, 1.0), lone);
+  // Crossing at x: the brush enters the tube straight above x, so the
+  // detected target is (x, 0, 0).
+  const auto across = [](StrokeId id, double x) {
+    return make_stroke(id, 40, [x](double u) { return Vec3(x, 0.1 - 0.2 * u, 0.0); }, 1.0);
+  };
+  const auto detect_with = [&](const Stroke& s, double dangling) {
+    CassieParams p;
+    p.dangling_snap_factor = dangling;
+    DetectionStats stats;
+    return detect_constraints(s, lone, thresholds(p, 1.0), p.brush_step, true, stats);
+  };
+  // 1 cm from the end (under δ = 2 cm): item 22 joins the end node.
+  auto d = detect_with(across(2, -0.01), 1.0);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].kind == TargetKind::node);
+  CHECK(d[0].node == end.id);
+  CHECK(d[0].target == Vec3::Zero());
+  CHECK(d[0].t_curve == 1.0);
+  // Item 8 alone (dangling_snap = 0): a lone end is not an intersection.
+  d = detect_with(across(3, -0.01), 0.0);
   REQUIRE(d.size() == 1);
   CHECK(d[0].kind == TargetKind::curve);
+  CHECK((d[0].target - Vec3(-0.01, 0.0, 0.0)).norm() < 1e-12);
+  // 3 cm from the end: beyond δ, a curve target.
+  d = detect_with(across(4, -0.03), 1.0);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].kind == TargetKind::curve);
+  // 5 mm from the lone node inside the curve: not the curve's end, no join.
+  d = detect_with(across(5, -0.095), 1.0);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].kind == TargetKind::curve);
+  CHECK((d[0].target - Vec3(-0.095, 0.0, 0.0)).norm() < 1e-12);
 }
 
 TEST_CASE("Item 7: merging compares with the previous constraint only", "[cassie][detection]") {
