@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "node_snap.hpp"
 #include "sketchlab/geometry/closest_point.hpp"
 
 namespace sketchlab::cassie {
@@ -27,43 +28,6 @@ struct Plane {
   Vec3 project(const Vec3& p) const { return p - side(p) * normal; }
 };
 
-// Item 8 (`FinalStroke.GetConstraint`): a target may snap only to the two
-// end nodes of the piece of the old curve it lies on, within `node_snap`,
-// and only to a node with more than one incidence (every stroke end is a
-// node in CASSIE; a lone end is not an intersection). The piece's ends are
-// the nearest nodes on the curve before and after t. A lone node at the old
-// curve's own end is joined within `dangling_snap`: item 22's graph reuses
-// a node "within δ on the old one" for an intersection, and CASSIE's curve
-// then ends on that node (cassie README, "A dangling end joined").
-std::optional<NodeId> snap_node(const Network& net, CurveId curve, double t, const Vec3& target,
-                                const Thresholds& th) {
-  const double reach = std::max(th.node_snap, th.dangling_snap);
-  const double t_max = net.curves().at(curve).curve.t_max();
-  const Node* before = nullptr;
-  const Node* after = nullptr;
-  double tb = -1.0, ta = 0.0;
-  for (const NodeHit& h : net.nodes_near(target, reach)) {
-    const Node& n = net.nodes().at(h.node);
-    for (const NodeIncidence& inc : n.incidences) {
-      if (inc.curve != curve) continue;
-      if (inc.t <= t && (!before || inc.t > tb)) before = &n, tb = inc.t;
-      if (inc.t >= t && (!after || inc.t < ta)) after = &n, ta = inc.t;
-    }
-  }
-  const Node* best = nullptr;
-  double best_d = reach;
-  for (const auto& [n, tn] : {std::pair{before, tb}, std::pair{after, ta}}) {
-    if (!n) continue;
-    const bool at_curve_end = tn <= 0.0 || tn >= t_max;
-    const double limit = n->incidences.size() >= 2 ? th.node_snap
-                         : at_curve_end && th.dangling_snap > 0 ? th.dangling_snap
-                                                                 : -1.0;
-    const double d = (n->position - target).norm();
-    if (d <= limit && d <= best_d) best = n, best_d = d;
-  }
-  return best ? std::optional<NodeId>(best->id) : std::nullopt;
-}
-
 Candidate curve_constraint(const Network& net, const CurveHit& hit, double time, const Vec3& brush,
                            const Thresholds& th) {
   Candidate c;
@@ -75,13 +39,7 @@ Candidate curve_constraint(const Network& net, const CurveHit& hit, double time,
   c.brush = brush;
   const Curve& old = net.curves().at(hit.curve).curve;
   c.at_curve_end = hit.t <= 0.0 || hit.t >= old.t_max();
-  if (const auto node = snap_node(net, hit.curve, hit.t, hit.point, th)) {
-    c.kind = TargetKind::node;
-    c.node = *node;
-    c.target = net.nodes().at(*node).position;
-    for (const NodeIncidence& inc : net.nodes().at(*node).incidences)
-      if (inc.curve == hit.curve) c.t_curve = inc.t;
-  }
+  snap_to_node(c, net, th);  // item 8
   return c;
 }
 

@@ -11,6 +11,7 @@
 #include "input_density.hpp"
 #include "line_beautify.hpp"
 #include "mirror_plane.hpp"
+#include "node_snap.hpp"
 #include "on_surface.hpp"
 #include "plane_fit.hpp"
 #include "sketchlab/geometry/bezier.hpp"
@@ -220,6 +221,8 @@ CorrectedStroke correct_bezier(Context& cx, const Curve& fitted_in) {
   CorrectedStroke cs;
   std::vector<Candidate> cands = detect(cx);
   correct_targets(cands, fitted_in, net, th.correction, p.correction_points, p.correction_keeps_target);  // item 8
+  if (p.corrected_node_snap)  // item 8: `GetConstraint` at the corrected target too
+    for (Candidate& c : cands) snap_to_node(c, net, th);
   oracle_positions(cx, cands);
   place_on_stroke(cands, fitted_in);
   std::stable_sort(cands.begin(), cands.end(),

@@ -84,6 +84,9 @@ const ParamTable<Settings>& parameters() {
                 "targets tried on the old curve around the detected one, ± this (item 8: δ/2)")
           .integer("correction_points", c(&C::correction_points), 0.0, 64.0, "",
                    "how many targets are tried on the old curve (item 8: 6; 0 keeps the detected target)")
+          .boolean("corrected_node_snap", c(&C::corrected_node_snap),
+                   "item 8's node snap (node_snap, dangling_snap) is tried again at the target the correction "
+                   "moved, as the app's GetConstraint makes the corrected constraint (off: at detection only)")
           .boolean("correction_keeps_target", c(&C::correction_keeps_target),
                    "the detected target is tried too, kept when nearest the new curve (a second reading of item "
                    "8; off: the 6 points only)")

@@ -82,6 +82,7 @@ struct CassieParams {
   double correction_factor = 0.5;        // ×δ, targets tried on the old curve: ±δ/2
   int correction_points = 6;             // ... this many
   bool correction_keeps_target = false;  // ... and the detected target itself (a second reading, README)
+  bool corrected_node_snap = true;       // item 8's node snap again at the corrected target
   double weight_grid = 1.0;              // grid point and mirror plane (CHI eq. 3: 1)
   double weight_endpoint = 1.25;         // at least this within δ of a stroke end (item 11)
   double weight_curve = 1.5;

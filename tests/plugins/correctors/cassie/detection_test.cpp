@@ -146,6 +146,55 @@ TEST_CASE("Items 8 and 22: a lone node joins only at the crossed curve's own end
   CHECK((d[0].target - Vec3(-0.095, 0.0, 0.0)).norm() < 1e-12);
 }
 
+TEST_CASE("Item 8: the node snap is tried again at the corrected target", "[cassie][detection]") {
+  // Curve 1 along x; curve 2 leaves the origin along -z; a node of both at
+  // the origin. A slow straight stroke in z = 0 crosses curve 1 at 45° at
+  // x = 1.5 cm. With a 5 mm brush (6.5 mm contact) it enters curve 1's tube
+  // at x ≈ 2.1 cm, beyond δ = 2 cm of the node, and never touches curve 2
+  // (it passes 1.06 cm from the origin). Item 8's correction keeps the point
+  // of curve 1 nearest the stroke among ±0.1, 0.3, 0.5δ: 0.3δ = 6 mm back,
+  // within δ of the node.
+  Sketch sketch;
+  add_curve(sketch, make_line({-0.2, 0.0, 0.0}, {0.2, 0.0, 0.0}));
+  add_curve(sketch, make_line({0.0, 0.0, 0.0}, {0.0, 0.0, -0.2}));
+  Edit e;
+  Node n;
+  n.id = sketch.network.next_node_id();
+  n.position = Vec3::Zero();
+  n.incidences = {{1, 0.5}, {2, 0.0}};
+  e.nodes_added.push_back(n);
+  sketch.network.apply(e);
+  const Stroke s = make_stroke(1, 60, [](double u) {
+    const double d = 0.1 - 0.2 * u;  // along the diagonal, through (0.015, 0, 0) at u = 0.5
+    return Vec3(0.015 + d, d, 0.0);
+  }, 3.0);
+  CassieParams p;
+  p.brush_factor = 0.25;
+  p.planarity = false;
+  const auto target_of = [&](bool again) {
+    p.corrected_node_snap = again;
+    const Correction c = correct_stroke(s, sketch, p);
+    REQUIRE(c.error.empty());
+    std::vector<Vec3> targets;
+    for (const Constraint& k : c.constraints)
+      if (k.kind == ConstraintKind::intersection) targets.push_back(k.target);
+    REQUIRE(targets.size() == 1);
+    return targets[0];
+  };
+  DetectionStats stats;
+  const auto detected = detect_constraints(s, sketch, thresholds(p, 1.0), p.brush_step, true, stats);
+  REQUIRE(detected.size() == 1);
+  CHECK(detected[0].kind == TargetKind::curve);
+  CHECK(detected[0].target.x() > 0.02);
+  // Detection alone: the corrected curve target, within δ of the node.
+  const Vec3 corrected = target_of(false);
+  CHECK(corrected.x() == Approx(detected[0].target.x() - 0.006).margin(1e-12));
+  CHECK(corrected.x() < 0.02);
+  CHECK(Vec3(0.0, corrected.y(), corrected.z()).norm() < 1e-12);
+  // Default: GetConstraint at the corrected target snaps it to the node.
+  CHECK(target_of(true).norm() < 1e-12);
+}
+
 TEST_CASE("Item 7: merging compares with the previous constraint only", "[cassie][detection]") {
   const Thresholds th = thresholds(CassieParams{}, 1.0);  // merge δ/2 = 1 cm, planes δ
   std::vector<Candidate> list;
