@@ -2,9 +2,11 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "sketchlab/heap_policy.hpp"
 #include "sketchlab/version.hpp"
 
 int main(int argc, char** argv) {
+  sketchlab::keep_freed_heap();  // per-stroke latency without allocator system calls
   CLI::App app{"sketchlab " SKETCHLAB_KERNEL_VERSION
                ": 3D sketch beautification with interchangeable correctors and surfacers"};
   app.require_subcommand(1);

@@ -36,6 +36,7 @@
 #include "controller_state.hpp"
 #include "correction_worker.hpp"
 #include "eye_renderer.hpp"
+#include "sketchlab/heap_policy.hpp"
 #include "sketchlab/config/config.hpp"
 #include "sketchlab/lab/stack.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
@@ -124,6 +125,7 @@ void print(const std::string& name, std::vector<double> v, const std::string& un
 }  // namespace
 
 int main(int argc, char** argv) {
+  sketchlab::keep_freed_heap();  // as the sketchlab program runs (heap_policy.hpp)
   const int frames = argc > 1 ? std::atoi(argv[1]) : 120;
   const int curves = argc > 2 ? std::atoi(argv[2]) : 2000;
   const int patches = argc > 3 ? std::atoi(argv[3]) : 200;

@@ -20,6 +20,7 @@
 
 #include "cassie_corrector.hpp"
 #include "kkt_solve.hpp"
+#include "sketchlab/heap_policy.hpp"
 #include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/lab/teacher_forced.hpp"
 #include "sketchlab/recording/recording_reader.hpp"
@@ -75,6 +76,7 @@ Stroke random_arc(std::mt19937& rng, StrokeId id, double cube) {
 }  // namespace
 
 int main() {
+  sketchlab::keep_freed_heap();  // as the sketchlab program runs (heap_policy.hpp)
   cassie::CassieParams params;
   params.mirror = cassie::MirrorMode::plane;  // imported sessions record both twins
   const std::filesystem::path dir = std::filesystem::path(SKETCHLAB_SOURCE_DIR) / "data/recordings";

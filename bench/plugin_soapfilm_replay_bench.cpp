@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "sketchlab/heap_policy.hpp"
 #include "sketchlab/lab/cassie_import.hpp"
 #include "sketchlab/lab/distribution.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
@@ -47,6 +48,7 @@ double sum(const std::vector<double>& v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sketchlab::keep_freed_heap();  // as the sketchlab program runs (heap_policy.hpp)
   std::string name = "vintage_car";
   std::map<std::string, ParamValue> given;
   const std::vector<ParamSpec> specs = soapfilm_param_specs();

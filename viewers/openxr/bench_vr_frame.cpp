@@ -13,6 +13,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "sketchlab/heap_policy.hpp"
 #include "sketchlab/plugin/plugin_host.hpp"
 #include "sketchlab/vr/vr_app.hpp"
 
@@ -38,6 +39,7 @@ void write_script(const fs::path& path, int width, int height, int frames) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sketchlab::keep_freed_heap();  // as the sketchlab program runs (heap_policy.hpp)
   const int frames = argc > 1 ? std::atoi(argv[1]) : 300;
   if (!std::getenv("XR_RUNTIME_JSON")) setenv("XR_RUNTIME_JSON", SKETCHLAB_TEST_XR_RUNTIME_JSON, 1);
   if (!fs::exists(std::getenv("XR_RUNTIME_JSON"))) {
