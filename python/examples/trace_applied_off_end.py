@@ -44,14 +44,6 @@ def read_logs(session):
     return logs
 
 
-def ends(row, k):
-    """CASSIE's end k and our end matched to it."""
-    ref = np.array(row.reference_curve.control_points)
-    out = np.array(row.output_curve.control_points)
-    ours = (1 - k) if row.reversed else k
-    return ref[0 if k == 0 else -1], out[0 if ours == 0 else -1]
-
-
 def traced_ends(rows, logs):
     for r in rows:
         log = logs.get(r.stroke)
@@ -60,7 +52,7 @@ def traced_ends(rows, logs):
         for k in range(2):
             if r.reference_snap[k] or not r.output_snap[k]:
                 continue
-            cassie_end, our_end = ends(r, k)
+            cassie_end, our_end = r.reference_end[k], r.output_end[k]
             near = lambda key: [(p, f) for p, f in log[key] if np.linalg.norm(p - our_end) <= NEAR]
             if near("rejectedPositionConstraints") or not near("appliedPositionConstraints"):
                 continue
@@ -86,7 +78,7 @@ def main(sessions, params):
                 for name, run in runs.items():
                     r = run[stroke]
                     if not r.output_snap[k]:
-                        cassie_end, our_end = ends(r, k)
+                        cassie_end, our_end = r.reference_end[k], r.output_end[k]
                         cause, moved = name, f"freed, {1000 * np.linalg.norm(cassie_end - our_end):.1f} mm from CASSIE's"
                         break
             counts[(cause, group)] += 1

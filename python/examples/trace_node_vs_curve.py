@@ -41,14 +41,6 @@ class KeepNodes:
         return c
 
 
-def end_points(row, k):
-    """CASSIE's end k and our end matched to it."""
-    ref = np.array(row.reference_curve.control_points)
-    out = np.array(row.output_curve.control_points)
-    ours = (1 - k) if row.reversed else k
-    return ref[0 if k == 0 else -1], out[0 if ours == 0 else -1]
-
-
 def our_target(row, end):
     """(curve id, parameter, position) of the enforced curve constraint at our end."""
     for c in row.constraints:
@@ -88,7 +80,7 @@ def main(sessions, params):
             for k in range(2):
                 if row.reference_snap[k] != "node" or row.output_snap[k] != "curve":
                     continue
-                cassie_end, our_end = end_points(row, k)
+                cassie_end, our_end = row.reference_end[k], row.output_end[k]
                 node = next((n for n, (p, _) in nodes.items() if np.linalg.norm(p - cassie_end) < 1e-4), None)
                 target = our_target(row, our_end)
                 if node is None or target is None:

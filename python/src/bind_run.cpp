@@ -195,6 +195,9 @@ void bind_teacher_forced(py::module_& m) {
       .def_readonly("reference_snap", &TeacherForcedStroke::reference_snap)
       .def_readonly("output_snap", &TeacherForcedStroke::output_snap)
       .def_readonly("reversed", &TeacherForcedStroke::reversed)
+      .def_readonly("reference_end", &TeacherForcedStroke::reference_end, "the reference curve's two ends (m)")
+      .def_readonly("output_end", &TeacherForcedStroke::output_end,
+                    "the output curve's ends matched to reference_end[0], [1] (m)")
       .def_readonly("reference_curve", &TeacherForcedStroke::reference_curve)
       .def_readonly("output_curve", &TeacherForcedStroke::output_curve)
       .def_readonly("constraints", &TeacherForcedStroke::constraints)

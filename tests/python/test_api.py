@@ -148,6 +148,9 @@ def test_teacher_forced_rows_hold_the_curves_compared(sl, small):
         b = np.asarray(out.control_points)[[-1, 0] if r.reversed else [0, -1]]
         worst = max(np.linalg.norm(a0 - b[0]), np.linalg.norm(a1 - b[1]))
         assert worst == pytest.approx(r.endpoint_distance, abs=1e-12)
+        # reference_end / output_end are those ends, ours matched to the reference's.
+        assert np.array_equal(np.asarray(r.reference_end), np.stack([a0, a1]))
+        assert np.array_equal(np.asarray(r.output_end), b)
         assert r.constraints_considered == len(r.constraints)
         assert r.constraints_enforced == sum(c.enforced for c in r.constraints)
         # Two-sided distances to the stroke's samples bound each sample's

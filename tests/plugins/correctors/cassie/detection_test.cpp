@@ -13,6 +13,7 @@
 using namespace sketchlab;
 using namespace sketchlab::cassie;
 using sketchlab::test::add_curve;
+using sketchlab::test::add_node;
 using sketchlab::test::make_stroke;
 
 namespace {
@@ -75,13 +76,7 @@ TEST_CASE("Item 8 at detection: a target snaps to an end node of its piece with 
   Sketch sketch;
   add_curve(sketch, make_line({0.0, -0.2, 0.0}, {0.0, 0.2, 0.0}));
   add_curve(sketch, make_line({-0.2, 0.0, 0.0}, {0.2, 0.0, 0.0}));
-  Edit e;
-  Node n;
-  n.id = sketch.network.next_node_id();
-  n.position = Vec3::Zero();
-  n.incidences = {{1, 0.5}, {2, 0.5}};
-  e.nodes_added.push_back(n);
-  sketch.network.apply(e);
+  const NodeId node = add_node(sketch, Vec3::Zero(), {{1, 0.5}, {2, 0.5}});
   // Along curve 1, 1 cm from it: in its tube from the start (a curve target
   // far from the node), then entering curve 2's tube 1 cm from the node.
   const Stroke s = make_stroke(1, 80, [](double u) { return Vec3(0.01, -0.15 + 0.3 * u, 0.0); }, 1.0);
@@ -90,7 +85,7 @@ TEST_CASE("Item 8 at detection: a target snaps to an end node of its piece with 
   CHECK(c[0].kind == TargetKind::curve);
   CHECK(c[0].curve == 1);
   CHECK(c[1].kind == TargetKind::node);
-  CHECK(c[1].node == n.id);
+  CHECK(c[1].node == node);
   CHECK(c[1].target == Vec3::Zero());
 }
 
@@ -100,18 +95,8 @@ TEST_CASE("Items 8 and 22: a lone node joins only at the crossed curve's own end
   // and a left-over lone node inside it at x = -0.1.
   Sketch lone;
   add_curve(lone, make_line({-0.2, 0.0, 0.0}, {0.0, 0.0, 0.0}));
-  Edit f;
-  Node end;
-  end.id = lone.network.next_node_id();
-  end.position = Vec3::Zero();
-  end.incidences = {{1, 1.0}};
-  f.nodes_added.push_back(end);
-  Node inside;
-  inside.id = end.id + 1;
-  inside.position = Vec3(-0.1, 0.0, 0.0);
-  inside.incidences = {{1, 0.5}};
-  f.nodes_added.push_back(inside);
-  lone.network.apply(f);
+  const NodeId end = add_node(lone, Vec3::Zero(), {{1, 1.0}});
+  add_node(lone, Vec3(-0.1, 0.0, 0.0), {{1, 0.5}});
   // Crossing at x: the brush enters the tube straight above x, so the
   // detected target is (x, 0, 0).
   const auto across = [](StrokeId id, double x) {
@@ -127,7 +112,7 @@ TEST_CASE("Items 8 and 22: a lone node joins only at the crossed curve's own end
   auto d = detect_with(across(2, -0.01), 1.0);
   REQUIRE(d.size() == 1);
   CHECK(d[0].kind == TargetKind::node);
-  CHECK(d[0].node == end.id);
+  CHECK(d[0].node == end);
   CHECK(d[0].target == Vec3::Zero());
   CHECK(d[0].t_curve == 1.0);
   // Item 8 alone (dangling_snap = 0): a lone end is not an intersection.
@@ -157,13 +142,7 @@ TEST_CASE("Item 8: the node snap is tried again at the corrected target", "[cass
   Sketch sketch;
   add_curve(sketch, make_line({-0.2, 0.0, 0.0}, {0.2, 0.0, 0.0}));
   add_curve(sketch, make_line({0.0, 0.0, 0.0}, {0.0, 0.0, -0.2}));
-  Edit e;
-  Node n;
-  n.id = sketch.network.next_node_id();
-  n.position = Vec3::Zero();
-  n.incidences = {{1, 0.5}, {2, 0.0}};
-  e.nodes_added.push_back(n);
-  sketch.network.apply(e);
+  add_node(sketch, Vec3::Zero(), {{1, 0.5}, {2, 0.0}});
   const Stroke s = make_stroke(1, 60, [](double u) {
     const double d = 0.1 - 0.2 * u;  // along the diagonal, through (0.015, 0, 0) at u = 0.5
     return Vec3(0.015 + d, d, 0.0);

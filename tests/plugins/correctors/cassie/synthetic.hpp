@@ -33,6 +33,18 @@ inline void add_curve(Sketch& sketch, const Curve& c) {
 
 inline void apply(Sketch& sketch, const Edit& e) { sketch.network.apply(e); }
 
+// Adds a node at `position` with these incidences; returns its id.
+inline NodeId add_node(Sketch& sketch, const Vec3& position, std::vector<NodeIncidence> incidences) {
+  Edit e;
+  Node n;
+  n.id = sketch.network.next_node_id();
+  n.position = position;
+  n.incidences = std::move(incidences);
+  e.nodes_added.push_back(n);
+  sketch.network.apply(e);
+  return n.id;
+}
+
 inline bool all_finite(const Curve& c) {
   for (const Vec3& p : c.control_points)
     if (!p.allFinite()) return false;
