@@ -255,8 +255,18 @@ std::vector<Cycle> CycleSearcher::search_segment(int segment, std::vector<WalkTr
   // start_turn: the first turn is at the start node, with its normal as is.
   const HalfEdge start{segment, params_.start_turn ? from1 : !from1};
   const NodeFrame& f = from1 ? f1 : f0;
-  if (!f.defined) return out;
-  for (const Vec3& n : {Vec3(f.normal), Vec3(-f.normal)}) {
+  Vec3 normal = f.normal;
+  if (!f.defined) {
+    // Neither end spans a plane (item 23), e.g. two curves closing a loop
+    // through two smooth nodes. CASSIE's plane fit still gives one and its
+    // walks close such loops; the segment's own plane (its tangent and its
+    // chord at the start node) stands in for it.
+    const Leaving l = leaving(HalfEdge{segment, !from1});
+    normal = l.tangent.cross(l.far);
+    if (normal.norm() < 1e-9) return out;
+    normal.normalize();
+  }
+  for (const Vec3& n : {normal, Vec3(-normal)}) {
     if (auto c = walk(start, n, t, params_.start_turn)) out.push_back(std::move(*c));
     if (traces) traces->push_back(trace);
   }

@@ -1,5 +1,6 @@
 // Cycle detection and patch upkeep through the kernel Session.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -215,6 +216,36 @@ TEST_CASE("cylinder: two circles and four sides give the four side patches", "[s
   // side's tangent plane), so the walks follow the sides (as in CASSIE; a
   // user adds the caps by hand).
   CHECK(caps == 0);
+}
+
+TEST_CASE("two half circles closing a loop through two nodes spanning no plane give one patch", "[soapfilm]") {
+  // At both nodes the two arcs' tangents are collinear and so are the
+  // directions to the opposite node (the other node, for both): item 23's
+  // fit spans no plane. CASSIE's walks close such loops (5 patches of the
+  // bundled sessions); the segment's own plane starts the walk.
+  const double r = 0.1, k = 0.5522847498307936 * r;
+  const auto half = [&](double a0) {
+    Curve c;
+    for (int q = 0; q < 2; ++q) {
+      const double a = a0 + q * 1.5707963267948966, b = a + 1.5707963267948966;
+      const Vec3 p0(r * std::cos(a), r * std::sin(a), 0.0), p1(r * std::cos(b), r * std::sin(b), 0.0);
+      const Vec3 d0(-std::sin(a), std::cos(a), 0.0), d1(-std::sin(b), std::cos(b), 0.0);
+      if (q == 0) c.control_points.push_back(p0);
+      c.control_points.push_back(p0 + k * d0);
+      c.control_points.push_back(p1 - k * d1);
+      c.control_points.push_back(p1);
+    }
+    c.sharp.assign(3, false);
+    return c;
+  };
+  const std::vector<PreparedCurve> curves{{half(0.0), {0.0, 2.0}}, {half(3.141592653589793), {0.0, 2.0}}};
+  PreparedSession s(curves);
+  s.draw_all(curves.size());
+  for (const auto& st : s.steps) CHECK(st.error == "");
+  const Network& net = s.network();
+  REQUIRE(net.nodes().size() == 2);
+  CHECK(patch_curves(net) == std::multiset<std::set<CurveId>>{{1, 2}});
+  for (const auto& [id, p] : net.patches()) CHECK(closed_chain(p));
 }
 
 TEST_CASE("seed_split_segments: the circles the sides end on are searched too, closing the caps", "[soapfilm]") {
