@@ -142,7 +142,10 @@ class CycleSearcher {
 
   // The two walks of a segment (item 25), one with each orientation of the
   // normal at its start node: node0, unless node0 is sharp (or has no
-  // normal) and node1 is not. May return the same cycle twice.
+  // normal) and node1 is not. When neither node spans a plane (item 23), the
+  // normal of the segment's own plane at node0 (its tangent × its chord);
+  // none when that is degenerate too (a straight segment). May return the
+  // same cycle twice.
   // `traces`, when given, receives the trace of each walk (see walk()).
   std::vector<Cycle> search_segment(int segment, std::vector<WalkTrace>* traces = nullptr);
 
