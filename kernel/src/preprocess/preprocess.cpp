@@ -33,6 +33,7 @@ std::string range_error(const char* name, double value, const char* allowed) {
 constexpr double kEndSpeedWindow = 0.1;  // s: 9 frames at 90 Hz
 void trim_last_end(const std::vector<Vec3>& points, const std::vector<double>& times, double trim,
                    std::vector<Vec3>& pts, std::vector<double>& ts, std::vector<std::size_t>& index) {
+  if (!(trim > 0.0)) return;
   const std::size_t first = index.front(), last = index.back();
   // Arclength along the input from `first`: s[i - first] at input sample i.
   const std::vector<double> s =
@@ -40,7 +41,7 @@ void trim_last_end(const std::vector<Vec3>& points, const std::vector<double>& t
   std::size_t from = last;
   while (from > first && times[last] - times[from] < kEndSpeedWindow) --from;
   const double span = times[last] - times[from], moved = s.back() - s[from - first];
-  if (!(trim > 0.0) || !(span > 0.0) || !(moved > 0.0)) return;
+  if (!(span > 0.0) || !(moved > 0.0)) return;
   const double at = s.back() - moved / span * trim;  // the new end's arclength
   if (!(at > 0.0)) return;
   // The end lies on the input segment [j - 1, j]: s at j - 1 <= at < s at j.
